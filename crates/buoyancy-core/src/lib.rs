@@ -1,0 +1,65 @@
+//! Buoyant force, center of buoyancy and torque on closed triangle meshes.
+//!
+//! This crate implements the five methods of Fábián's *Approximate and exact buoyancy
+//! calculation for real-time floating simulation of meshes* against a flat water plane of any
+//! orientation, with the torque of the pressure field integrated exactly:
+//!
+//! | [`Method`] | triangles it sums | exact for a flat plane |
+//! |---|---|---|
+//! | [`Method::Fast`] | fully submerged, volume elements precomputed about the mesh centroid | no |
+//! | [`Method::Improved`] | fully submerged, reference point on the water plane | no |
+//! | [`Method::Exact`] | fully submerged + clipped waterline triangles, reference on the plane | yes |
+//! | [`Method::FastSurface`] | pressure on fully submerged triangles | no |
+//! | [`Method::ExactSurface`] | pressure on fully submerged + clipped waterline triangles | yes |
+//!
+//! # Frames and units
+//! A [`Mesh`] lives in its own *mesh frame* (local space). A [`Pose`] maps mesh space to world
+//! space: `x_world = R·x_mesh + t`. A [`Water`] plane and every [`Buoyancy`] result are expressed
+//! in the *world frame*. Units are SI: metres, kilograms per cubic metre, metres per second
+//! squared, newtons, newton-metres.
+//!
+//! # Example
+//! ```
+//! use buoyancy_core::{shape, Mesh, Method, Pose, Water};
+//! use nalgebra::{Translation3, UnitQuaternion};
+//!
+//! // A unit cube (centered at the origin of its mesh frame) with its center 0.25 m below the surface.
+//! let (vertices, triangles) = shape::cube::<f64>(1);
+//! let cube = Mesh::new(vertices, triangles).unwrap();
+//! let pose = Pose::from_parts(Translation3::new(0.0, -0.25, 0.0), UnitQuaternion::identity());
+//! let b = cube.buoyancy(&pose, &Water::default(), Method::Exact).unwrap();
+//!
+//! assert!((b.submerged_volume - 0.75).abs() < 1e-12);
+//! assert!((b.force.y - 1000.0 * 9.81 * 0.75).abs() < 1e-9);
+//! assert!((b.center_of_buoyancy.y - (-0.25 - 0.125)).abs() < 1e-12);
+//! assert!(b.torque.norm() < 1e-9); // upright: the force acts through the center of mass
+//! ```
+#![no_std]
+#![deny(missing_docs)]
+#![warn(clippy::all)]
+
+extern crate alloc;
+#[cfg(feature = "std")]
+extern crate std;
+
+mod error;
+mod integrals;
+pub mod io;
+mod mesh;
+mod method;
+mod query;
+mod real;
+pub mod shape;
+mod water;
+
+pub use error::Error;
+pub use mesh::Mesh;
+pub use method::Method;
+pub use query::Buoyancy;
+pub use real::Real;
+pub use water::Water;
+
+/// A rigid transform from mesh space to world space: `x_world = rotation · x_mesh + translation`.
+pub type Pose<T> = nalgebra::Isometry3<T>;
+
+pub use nalgebra;

@@ -1,0 +1,363 @@
+use alloc::vec::Vec;
+
+use nalgebra::{Point3, Vector3};
+
+use crate::{Error, Real};
+
+/// A closed, consistently oriented triangle mesh, validated and prepared for buoyancy queries.
+///
+/// Built once from vertices and triangle indices; every query afterwards only reads it, so a
+/// `Mesh` can be shared between threads. Construction checks that the triangles form a closed
+/// 2-manifold with consistent orientation (every edge shared by exactly two triangles that
+/// traverse it in opposite directions), and:
+///
+/// * **fixes** inward winding: if the enclosed signed volume is negative, every triangle is
+///   flipped (see [`Mesh::was_reoriented`]);
+/// * **accepts** zero-area triangles (coincident vertices with distinct indices) and unused
+///   vertices;
+/// * **rejects** everything else with a typed [`Error`] naming the vertex, triangle or edge.
+///
+/// It precomputes, in `f64` whatever `T` is, the volume, the centroid, the vertices relative to
+/// the centroid, and the per-triangle volume elements the [`Fast`](crate::Method::Fast) method
+/// sums. All of it is in the *mesh frame*.
+///
+/// ```
+/// use buoyancy_core::{Error, Mesh};
+/// use nalgebra::Point3;
+///
+/// let v: Vec<Point3<f64>> = vec![
+///     Point3::new(0.0, 0.0, 0.0),
+///     Point3::new(1.0, 0.0, 0.0),
+///     Point3::new(0.0, 1.0, 0.0),
+///     Point3::new(0.0, 0.0, 1.0),
+/// ];
+/// let tetrahedron = Mesh::new(v.clone(), vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]).unwrap();
+/// assert!((tetrahedron.volume() - 1.0 / 6.0).abs() < 1e-15);
+///
+/// // Without its last face the surface has a hole.
+/// let open = Mesh::new(v, vec![[0, 2, 1], [0, 1, 3], [0, 3, 2]]);
+/// assert!(matches!(open, Err(Error::OpenEdge { .. })));
+/// ```
+#[derive(Debug, Clone)]
+pub struct Mesh<T: Real> {
+    /// Vertex positions relative to `centroid`, mesh frame.
+    pub(crate) vertices: Vec<Vector3<T>>,
+    /// Outward-oriented triangles (counter-clockwise seen from outside).
+    pub(crate) triangles: Vec<[u32; 3]>,
+    /// Centroid of the enclosed volume, mesh frame.
+    pub(crate) centroid: Point3<T>,
+    /// Enclosed volume, m³.
+    pub(crate) volume: T,
+    /// Σ |V_i(centroid)|: the magnitude of the terms the volume is summed from, used to make
+    /// round-off thresholds relative to the mesh.
+    pub(crate) volume_scale: T,
+    /// Per triangle `6·V_i = v_a·(v_b×v_c)`: six times the signed volume of the tetrahedron
+    /// it spans with the centroid.
+    pub(crate) tetra_volume6: Vec<T>,
+    /// Per triangle `24·V_i·(v_a+v_b+v_c)/4`: twenty-four times that tetrahedron's first
+    /// moment about the centroid.
+    pub(crate) tetra_moment24: Vec<Vector3<T>>,
+    /// Largest distance of a vertex from the centroid.
+    pub(crate) bounding_radius: T,
+    reoriented: bool,
+}
+
+impl<T: Real> Mesh<T> {
+    /// Validates and prepares a mesh from vertex positions (mesh frame, metres) and triangles
+    /// (zero-based indices into `vertices`, wound counter-clockwise seen from outside, or all
+    /// clockwise: inward winding is detected and fixed).
+    ///
+    /// # Errors
+    /// [`Error::EmptyMesh`], [`Error::TooManyVertices`], [`Error::NonFiniteVertex`],
+    /// [`Error::IndexOutOfRange`], [`Error::RepeatedIndex`], [`Error::OpenEdge`],
+    /// [`Error::NonManifoldEdge`], [`Error::InconsistentOrientation`] and
+    /// [`Error::ZeroVolume`], in that order of checking.
+    pub fn new(vertices: Vec<Point3<T>>, triangles: Vec<[u32; 3]>) -> Result<Self, Error> {
+        let mut triangles = triangles;
+        if triangles.is_empty() {
+            return Err(Error::EmptyMesh);
+        }
+        if u32::try_from(vertices.len()).is_err() {
+            return Err(Error::TooManyVertices {
+                count: vertices.len(),
+            });
+        }
+        if let Some(vertex) = vertices
+            .iter()
+            .position(|p| !p.iter().all(|c| c.is_finite()))
+        {
+            return Err(Error::NonFiniteVertex { vertex });
+        }
+        for (triangle, t) in triangles.iter().enumerate() {
+            if let Some(&index) = t.iter().find(|&&i| i as usize >= vertices.len()) {
+                return Err(Error::IndexOutOfRange {
+                    triangle,
+                    index,
+                    vertex_count: vertices.len(),
+                });
+            }
+            if t[0] == t[1] || t[1] == t[2] || t[2] == t[0] {
+                return Err(Error::RepeatedIndex {
+                    triangle,
+                    indices: *t,
+                });
+            }
+        }
+        check_closed_manifold(&triangles)?;
+
+        // Everything below in f64, relative to the middle of the bounding box, so that f32
+        // meshes and meshes far from their origin keep their digits.
+        let points: Vec<Vector3<f64>> = vertices.iter().map(|p| p.coords.map(T::to_f64)).collect();
+        let (lo, hi) = points.iter().fold(
+            (points[0], points[0]),
+            |(lo, hi), p| (lo.inf(p), hi.sup(p)),
+        );
+        let middle = (lo + hi) * 0.5;
+        let (mut volume, mut moment, scale) = volume_moments(&points, &triangles, &middle);
+        if !(volume.abs() > 1e-12 * scale) {
+            return Err(Error::ZeroVolume { volume, scale });
+        }
+        let reoriented = volume < 0.0;
+        if reoriented {
+            for t in triangles.iter_mut() {
+                t.swap(1, 2);
+            }
+            // Flipping a triangle negates its determinant exactly.
+            (volume, moment) = (-volume, -moment);
+        }
+        let centroid = middle + moment / volume;
+
+        let relative: Vec<Vector3<f64>> = points.iter().map(|p| p - centroid).collect();
+        let mut tetra_volume6 = Vec::with_capacity(triangles.len());
+        let mut tetra_moment24 = Vec::with_capacity(triangles.len());
+        let mut volume_scale = 0.0;
+        for t in &triangles {
+            let [a, b, c] = t.map(|i| relative[i as usize]);
+            let det = a.dot(&b.cross(&c));
+            volume_scale += det.abs() / 6.0;
+            tetra_volume6.push(T::lit(det));
+            tetra_moment24.push(((a + b + c) * det).map(T::lit));
+        }
+        let bounding_radius = relative.iter().map(|v| v.norm()).fold(0.0, f64::max);
+        Ok(Mesh {
+            vertices: relative.iter().map(|v| v.map(T::lit)).collect(),
+            triangles,
+            centroid: Point3::from(centroid.map(T::lit)),
+            volume: T::lit(volume),
+            volume_scale: T::lit(volume_scale),
+            tetra_volume6,
+            tetra_moment24,
+            bounding_radius: T::lit(bounding_radius),
+            reoriented,
+        })
+    }
+
+    /// Enclosed volume in m³ (positive).
+    pub fn volume(&self) -> T {
+        self.volume
+    }
+
+    /// Centroid of the enclosed volume (the center of mass of a uniform body), mesh frame.
+    pub fn centroid(&self) -> Point3<T> {
+        self.centroid
+    }
+
+    /// Number of vertices, including any that no triangle uses.
+    pub fn vertex_count(&self) -> usize {
+        self.vertices.len()
+    }
+
+    /// Number of triangles.
+    pub fn triangle_count(&self) -> usize {
+        self.triangles.len()
+    }
+
+    /// Position of vertex `i`, mesh frame. Panics if `i >= vertex_count()`.
+    pub fn vertex(&self, i: usize) -> Point3<T> {
+        self.centroid + self.vertices[i]
+    }
+
+    /// The triangles, oriented outward (flipped from the input if [`Mesh::was_reoriented`]).
+    pub fn triangles(&self) -> &[[u32; 3]] {
+        &self.triangles
+    }
+
+    /// Whether the input was wound inward (negative signed volume) and every triangle flipped.
+    pub fn was_reoriented(&self) -> bool {
+        self.reoriented
+    }
+
+    /// Largest distance of a vertex from the centroid, in m: the radius of a ball about the
+    /// centroid that holds the mesh.
+    pub fn bounding_radius(&self) -> T {
+        self.bounding_radius
+    }
+}
+
+/// Signed volume, first moment about `origin` and Σ|tetrahedron volume| of a closed mesh.
+fn volume_moments(
+    points: &[Vector3<f64>],
+    triangles: &[[u32; 3]],
+    origin: &Vector3<f64>,
+) -> (f64, Vector3<f64>, f64) {
+    let mut volume = 0.0;
+    let mut moment = Vector3::zeros();
+    let mut scale = 0.0;
+    for t in triangles {
+        let [a, b, c] = t.map(|i| points[i as usize] - origin);
+        let v = a.dot(&b.cross(&c)) / 6.0;
+        volume += v;
+        scale += v.abs();
+        moment += (a + b + c) * (v / 4.0);
+    }
+    (volume, moment, scale)
+}
+
+/// Checks that every edge is shared by exactly two triangles traversing it in opposite
+/// directions. Runs in O(n log n) with one sort, no hashing (no_std).
+fn check_closed_manifold(triangles: &[[u32; 3]]) -> Result<(), Error> {
+    // (smaller vertex, larger vertex, triangle, whether the triangle goes smaller -> larger)
+    let mut edges: Vec<(u32, u32, u32, bool)> = Vec::with_capacity(triangles.len() * 3);
+    for (i, t) in triangles.iter().enumerate() {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            edges.push((a.min(b), a.max(b), i as u32, a < b));
+        }
+    }
+    edges.sort_unstable();
+    let mut start = 0;
+    while start < edges.len() {
+        let (lo, hi, first, forward) = edges[start];
+        let mut end = start + 1;
+        while end < edges.len() && edges[end].0 == lo && edges[end].1 == hi {
+            end += 1;
+        }
+        let edge = [lo, hi];
+        match end - start {
+            1 => {
+                return Err(Error::OpenEdge {
+                    edge,
+                    triangle: first as usize,
+                });
+            }
+            2 => {
+                let (_, _, second, second_forward) = edges[start + 1];
+                if forward == second_forward {
+                    return Err(Error::InconsistentOrientation {
+                        edge: if forward { [lo, hi] } else { [hi, lo] },
+                        triangles: [first as usize, second as usize],
+                    });
+                }
+            }
+            n => {
+                return Err(Error::NonManifoldEdge {
+                    edge,
+                    triangle_count: n,
+                    triangles: [first as usize, edges[start + 1].2 as usize],
+                });
+            }
+        }
+        start = end;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use alloc::vec;
+
+    fn tetrahedron() -> (Vec<Point3<f64>>, Vec<[u32; 3]>) {
+        (
+            vec![
+                Point3::new(0.0, 0.0, 0.0),
+                Point3::new(1.0, 0.0, 0.0),
+                Point3::new(0.0, 1.0, 0.0),
+                Point3::new(0.0, 0.0, 1.0),
+            ],
+            vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
+        )
+    }
+
+    #[test]
+    fn tetrahedron_volume_and_centroid() {
+        let (v, t) = tetrahedron();
+        let m = Mesh::new(v, t).unwrap();
+        assert!((m.volume() - 1.0 / 6.0).abs() < 1e-15);
+        assert!((m.centroid() - Point3::new(0.25, 0.25, 0.25)).norm() < 1e-15);
+        assert!(!m.was_reoriented());
+        assert_eq!((m.vertex_count(), m.triangle_count()), (4, 4));
+        let sum: f64 = m.tetra_volume6.iter().sum();
+        assert!((sum / 6.0 - m.volume()).abs() < 1e-15);
+    }
+
+    #[test]
+    fn inward_winding_is_flipped() {
+        let (v, mut t) = tetrahedron();
+        t.iter_mut().for_each(|t| t.swap(0, 1));
+        let m = Mesh::new(v, t).unwrap();
+        assert!(m.was_reoriented());
+        assert!((m.volume() - 1.0 / 6.0).abs() < 1e-15);
+        assert_eq!(m.triangles()[0], [2, 1, 0]);
+    }
+
+    #[test]
+    fn each_error_names_its_culprit() {
+        let (v, t) = tetrahedron();
+        assert_eq!(Mesh::new(v.clone(), vec![]).unwrap_err(), Error::EmptyMesh);
+
+        let mut bad = v.clone();
+        bad[2].y = f64::NAN;
+        assert_eq!(
+            Mesh::new(bad, t.clone()).unwrap_err(),
+            Error::NonFiniteVertex { vertex: 2 }
+        );
+
+        let mut out = t.clone();
+        out[3] = [1, 2, 9];
+        assert_eq!(
+            Mesh::new(v.clone(), out).unwrap_err(),
+            Error::IndexOutOfRange { triangle: 3, index: 9, vertex_count: 4 }
+        );
+
+        let mut repeated = t.clone();
+        repeated[1] = [0, 1, 1];
+        assert_eq!(
+            Mesh::new(v.clone(), repeated).unwrap_err(),
+            Error::RepeatedIndex { triangle: 1, indices: [0, 1, 1] }
+        );
+
+        assert_eq!(
+            Mesh::new(v.clone(), t[..3].to_vec()).unwrap_err(),
+            Error::OpenEdge { edge: [1, 2], triangle: 0 }
+        );
+
+        let mut flipped = t.clone();
+        flipped[3] = [1, 3, 2];
+        assert_eq!(
+            Mesh::new(v.clone(), flipped).unwrap_err(),
+            Error::InconsistentOrientation { edge: [2, 1], triangles: [0, 3] }
+        );
+
+        // A fin: a fifth vertex and two triangles sharing edge (1, 2) with the tetrahedron.
+        let mut fin_v = v.clone();
+        fin_v.push(Point3::new(1.0, 1.0, -1.0));
+        let mut fin_t = t.clone();
+        fin_t.extend([[1, 2, 4], [2, 1, 4]]);
+        assert_eq!(
+            Mesh::new(fin_v, fin_t).unwrap_err(),
+            Error::NonManifoldEdge { edge: [1, 2], triangle_count: 4, triangles: [0, 3] }
+        );
+
+        // Two copies of one triangle, back to back: closed, but flat.
+        let flat = Mesh::new(v, vec![[0, 1, 2], [0, 2, 1]]).unwrap_err();
+        assert!(matches!(flat, Error::ZeroVolume { .. }), "{flat}");
+    }
+
+    #[test]
+    fn messages_are_actionable() {
+        let e = Error::InconsistentOrientation { edge: [3, 5], triangles: [10, 12] };
+        let s = alloc::format!("{e}");
+        assert!(s.contains("10") && s.contains("12") && s.contains("3 -> 5"), "{s}");
+    }
+}

@@ -1,0 +1,96 @@
+use core::fmt;
+use core::str::FromStr;
+
+use crate::Error;
+
+/// How the buoyancy of a mesh is computed: the five methods of the paper.
+///
+/// | method | triangles it sums | exact for a flat plane | relative cost |
+/// |---|---|---|---|
+/// | `Fast` | fully submerged; volume elements precomputed about the mesh centroid | no | 1 |
+/// | `Improved` | fully submerged; reference point on the water plane | no | ≈ 2 |
+/// | `Exact` | `Improved` + the submerged part of every waterline triangle | yes | ≈ 2 |
+/// | `FastSurface` | pressure over fully submerged triangles | no | ≈ 2 |
+/// | `ExactSurface` | `FastSurface` + the submerged part of every waterline triangle | yes | ≈ 2.5 |
+///
+/// The volume methods apply the divergence theorem: the submerged volume is a sum of signed
+/// tetrahedra `V_i(o) = (a−o)·((b−o)×(c−o))/6`. With the reference point `o` on the water plane
+/// (`Improved`, `Exact`) the cap where the plane cuts the body contributes nothing, so clipping
+/// the waterline triangles is all `Exact` needs. `Fast` uses the mesh centroid as `o`, which lets
+/// it precompute every `V_i`, and misses the cone from the centroid to the cap: its error does
+/// not shrink when the mesh is refined.
+///
+/// The surface methods integrate the hydrostatic pressure `p = ρ·g·depth` over the wetted
+/// surface, `F = −∫ p dA`, and its moment exactly (pressure is linear on each triangle). Their
+/// volume is the one implied by the force, `V = n·F / (ρ·g)`, and their center of buoyancy the
+/// centroid implied by the pressure moments (see [`Buoyancy`](crate::Buoyancy)); for a closed
+/// mesh under a flat plane both equal the exact ones.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Method {
+    /// Fully submerged triangles only, tetrahedra to the mesh centroid (precomputed).
+    Fast,
+    /// Fully submerged triangles only, tetrahedra to a reference point on the water plane.
+    Improved,
+    /// Exact submerged volume: `Improved` plus the clipped waterline triangles.
+    #[default]
+    Exact,
+    /// Pressure integrated over the fully submerged triangles.
+    FastSurface,
+    /// Pressure integrated over the exact wetted surface (waterline triangles clipped).
+    ExactSurface,
+}
+
+impl Method {
+    /// All five methods, in the paper's order.
+    pub const ALL: [Method; 5] = [
+        Method::Fast,
+        Method::Improved,
+        Method::Exact,
+        Method::FastSurface,
+        Method::ExactSurface,
+    ];
+
+    /// The method's snake-case name: `fast`, `improved`, `exact`, `fast_surface`, `exact_surface`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Method::Fast => "fast",
+            Method::Improved => "improved",
+            Method::Exact => "exact",
+            Method::FastSurface => "fast_surface",
+            Method::ExactSurface => "exact_surface",
+        }
+    }
+
+    /// Whether the method is exact (up to round-off) for a closed mesh under a flat plane.
+    pub const fn is_exact(self) -> bool {
+        matches!(self, Method::Exact | Method::ExactSurface)
+    }
+
+    /// Whether the method integrates pressure over the surface rather than volume elements.
+    pub const fn is_surface(self) -> bool {
+        matches!(self, Method::FastSurface | Method::ExactSurface)
+    }
+}
+
+impl fmt::Display for Method {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Method {
+    type Err = Error;
+
+    /// Parses a name of [`Method::name`] (case-insensitive, `-` accepted for `_`).
+    fn from_str(s: &str) -> Result<Self, Error> {
+        Method::ALL
+            .into_iter()
+            .find(|m| {
+                m.name().len() == s.len()
+                    && m.name().bytes().zip(s.bytes()).all(|(a, b)| {
+                        a == b.to_ascii_lowercase() || (a == b'_' && b == b'-')
+                    })
+            })
+            .ok_or_else(|| Error::UnknownMethod { name: s.into() })
+    }
+}

@@ -1,0 +1,480 @@
+//! Evaluation of the five methods for a mesh at a pose in a body of water.
+//!
+//! # Frames
+//! Per evaluation the water plane is brought into the mesh frame, not the mesh into the world:
+//! with `R` the pose's rotation, `t` its translation, `c` the mesh centroid and `n` the world up
+//! normal,
+//!
+//! * `n_l = Rᵀ n` is the up normal in the mesh frame,
+//! * `w = R c + t` is the center of mass in the world frame,
+//! * `h_c = n·w − level` is its height above the surface,
+//!
+//! and the height of a vertex `x` (stored as `v = x − c`) is `h = n_l·v + h_c`. The sums are
+//! taken on `v` or on `v + h_c n_l` (relative to `o`, the projection of the center of mass on the
+//! plane), both small numbers even when the body is 10⁶ m from the world origin, and rotated to
+//! the world frame once at the end.
+//!
+//! # Determinism
+//! Triangles are summed in fixed chunks of [`CHUNK`] combined pairwise in a fixed tree, whether
+//! the chunks run on one thread or on rayon's pool: the serial and parallel results are
+//! bit-identical and the same input always gives the same output.
+
+use nalgebra::{Matrix3, Point3, UnitQuaternion, Vector3};
+
+use crate::integrals::{clip_below, Counts, Sums, SurfaceSums, VolumeSums};
+use crate::{Error, Mesh, Method, Pose, Real, Water};
+
+/// Number of triangles summed sequentially before the pairwise combination.
+pub(crate) const CHUNK: usize = 4096;
+
+/// The buoyancy of a body: force, its point of application and its torque, world frame, SI units.
+///
+/// For the volume methods ([`Fast`](Method::Fast), [`Improved`](Method::Improved),
+/// [`Exact`](Method::Exact)) `submerged_volume` and `center_of_buoyancy` are the volume and
+/// centroid of the part found under water, the force is `ρ·g·V·n` and it acts at the center of
+/// buoyancy. For the surface methods ([`FastSurface`](Method::FastSurface),
+/// [`ExactSurface`](Method::ExactSurface)) the force and torque are the integrals of the pressure
+/// over the wetted triangles; `submerged_volume` is the volume implied by the force,
+/// `n·F / (ρ·g)`, and `center_of_buoyancy` the centroid implied by the pressure moments,
+/// `∫ h r (n·dA) − (n/2)∫ h² (n·dA)` divided by that volume. For a closed mesh under a flat plane
+/// the exact methods agree on all of it.
+///
+/// When (almost) nothing is under water, that is when `|submerged_volume|` is below round-off
+/// relative to the mesh's own volume, `center_of_buoyancy` is the projection of the center of
+/// mass onto the water plane: the point where buoyancy starts to act as the body enters the
+/// water. Volume, force and torque are then as computed (zero, or round-off), never NaN.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Buoyancy<T: Real> {
+    /// Volume under water, m³ (may be negative for the approximate methods on non-convex
+    /// meshes, whose missing contributions are not sign-definite).
+    pub submerged_volume: T,
+    /// Point of application of the force, world frame, m.
+    pub center_of_buoyancy: Point3<T>,
+    /// Buoyant force, world frame, N.
+    pub force: Vector3<T>,
+    /// Torque of the buoyant force about [`torque_point`](Self::torque_point), world frame, N·m.
+    pub torque: Vector3<T>,
+    /// The point the torque is taken about: the body's center of mass (the mesh centroid under
+    /// the pose), world frame, m. Use [`torque_about`](Self::torque_about) for another point.
+    pub torque_point: Point3<T>,
+    /// Number of triangles entirely under water (a triangle lying in the surface counts).
+    pub fully_submerged: usize,
+    /// Number of triangles the surface cuts (some vertex above, some below).
+    pub partially_submerged: usize,
+}
+
+impl<T: Real> Buoyancy<T> {
+    /// The torque of the same force system about another world point `q`:
+    /// `τ_q = τ + (torque_point − q) × F`. Exact for any force system, not only a single force.
+    pub fn torque_about(&self, q: &Point3<T>) -> Vector3<T> {
+        self.torque + (self.torque_point - q).cross(&self.force)
+    }
+
+    /// This result with its torque taken about the world point `q` instead.
+    pub fn about(mut self, q: &Point3<T>) -> Self {
+        self.torque = self.torque_about(q);
+        self.torque_point = *q;
+        self
+    }
+
+    fn is_finite(&self) -> bool {
+        self.submerged_volume.is_finite()
+            && self.center_of_buoyancy.iter().all(|c| c.is_finite())
+            && self.force.iter().all(|c| c.is_finite())
+            && self.torque.iter().all(|c| c.is_finite())
+    }
+}
+
+/// The water plane seen from the mesh frame, for one evaluation.
+struct Frame<T: Real> {
+    rotation: Matrix3<T>,
+    /// World up normal.
+    normal: Vector3<T>,
+    /// Up normal in the mesh frame, `Rᵀ n`.
+    normal_local: Vector3<T>,
+    /// Center of mass, world frame.
+    center_of_mass: Point3<T>,
+    /// Height of the center of mass above the surface.
+    height: T,
+}
+
+impl<T: Real> Frame<T> {
+    fn new(mesh: &Mesh<T>, pose: &Pose<T>, water: &Water<T>) -> Result<Self, Error> {
+        let q = pose.rotation.quaternion().coords;
+        if !q.iter().all(|c| c.is_finite()) {
+            return Err(Error::InvalidPose {
+                reason: "the rotation has a NaN or infinite component",
+            });
+        }
+        if !pose.translation.vector.iter().all(|c| c.is_finite()) {
+            return Err(Error::InvalidPose {
+                reason: "the translation has a NaN or infinite component",
+            });
+        }
+        // Renormalised here, so a quaternion that drifted from unit length still gives a rotation.
+        let unit = UnitQuaternion::try_new(pose.rotation.into_inner(), T::zero()).ok_or(
+            Error::InvalidPose {
+                reason: "the rotation quaternion is zero",
+            },
+        )?;
+        let rotation = *unit.to_rotation_matrix().matrix();
+        let normal = water.normal().into_inner();
+        let center_of_mass = Point3::from(rotation * mesh.centroid.coords) + pose.translation.vector;
+        Ok(Frame {
+            rotation,
+            normal,
+            normal_local: rotation.transpose() * normal,
+            center_of_mass,
+            height: water.height(&center_of_mass),
+        })
+    }
+
+    /// Heights above the surface of vertices given relative to the centroid, mesh frame.
+    #[inline(always)]
+    fn heights(&self, v: &[Vector3<T>; 3]) -> [T; 3] {
+        v.map(|v| self.normal_local.dot(&v) + self.height)
+    }
+
+    /// The projection of the center of mass onto the surface, world frame.
+    fn surface_point(&self) -> Point3<T> {
+        self.center_of_mass - self.normal * self.height
+    }
+}
+
+impl<T: Real> Mesh<T> {
+    /// The buoyancy of this mesh placed by `pose` (mesh → world) in `water`, by `method`.
+    /// The torque is about the body's center of mass; see [`Buoyancy::about`] for another point.
+    ///
+    /// Runs in one pass over the triangles with no allocation.
+    ///
+    /// # Errors
+    /// [`Error::InvalidPose`] if the pose has a NaN or infinite component or a zero quaternion
+    /// (a non-unit quaternion is normalised); [`Error::NonFiniteResult`] if the pose or water
+    /// is so large that the result overflows.
+    pub fn buoyancy(
+        &self,
+        pose: &Pose<T>,
+        water: &Water<T>,
+        method: Method,
+    ) -> Result<Buoyancy<T>, Error> {
+        self.evaluate(pose, water, method, false)
+    }
+
+    /// [`Mesh::buoyancy`], with the triangles split in fixed chunks across rayon's thread pool.
+    /// The result is bit-identical to the serial one.
+    #[cfg(feature = "rayon")]
+    pub fn par_buoyancy(
+        &self,
+        pose: &Pose<T>,
+        water: &Water<T>,
+        method: Method,
+    ) -> Result<Buoyancy<T>, Error> {
+        self.evaluate(pose, water, method, true)
+    }
+
+    fn evaluate(
+        &self,
+        pose: &Pose<T>,
+        water: &Water<T>,
+        method: Method,
+        parallel: bool,
+    ) -> Result<Buoyancy<T>, Error> {
+        let frame = Frame::new(self, pose, water)?;
+        let n = frame.normal_local;
+        let result = match method {
+            Method::Fast => {
+                let sums = reduce(self.triangles.len(), parallel, &|s: &mut VolumeSums<T>, i| {
+                    let v = self.corners(i);
+                    match classify(&frame.heights(&v)) {
+                        Side::Below => {
+                            s.volume6 += self.tetra_volume6[i];
+                            s.moment24 += self.tetra_moment24[i];
+                            s.counts.full += 1;
+                        }
+                        Side::Crossing => s.counts.partial += 1,
+                        Side::Above => {}
+                    }
+                });
+                // Moments about the centroid.
+                self.volume_result(&frame, water, sums, Vector3::zeros())
+            }
+            Method::Improved | Method::Exact => {
+                let exact = method == Method::Exact;
+                // Positions relative to o, the projection of the centroid on the plane.
+                let shift = n * frame.height;
+                let sums = reduce(self.triangles.len(), parallel, &|s: &mut VolumeSums<T>, i| {
+                    let v = self.corners(i);
+                    let h = frame.heights(&v);
+                    match classify(&h) {
+                        Side::Below => {
+                            s.add_tetrahedron(v.map(|v| v + shift));
+                            s.counts.full += 1;
+                        }
+                        Side::Crossing => {
+                            s.counts.partial += 1;
+                            if exact {
+                                clip_below(v.map(|v| v + shift), h, |p, _| s.add_tetrahedron(p));
+                            }
+                        }
+                        Side::Above => {}
+                    }
+                });
+                self.volume_result(&frame, water, sums, -shift)
+            }
+            Method::FastSurface | Method::ExactSurface => {
+                let exact = method == Method::ExactSurface;
+                // Positions relative to the centroid.
+                let sums = reduce(self.triangles.len(), parallel, &|s: &mut SurfaceSums<T>, i| {
+                    let v = self.corners(i);
+                    let h = frame.heights(&v);
+                    match classify(&h) {
+                        Side::Below => {
+                            s.add_triangle(&n, v, h);
+                            s.counts.full += 1;
+                        }
+                        Side::Crossing => {
+                            s.counts.partial += 1;
+                            if exact {
+                                clip_below(v, h, |p, hp| s.add_triangle(&n, p, hp));
+                            }
+                        }
+                        Side::Above => {}
+                    }
+                });
+                self.surface_result(&frame, water, sums)
+            }
+        };
+        if result.is_finite() {
+            Ok(result)
+        } else {
+            Err(Error::NonFiniteResult)
+        }
+    }
+
+    #[inline(always)]
+    fn corners(&self, i: usize) -> [Vector3<T>; 3] {
+        self.triangles[i].map(|k| self.vertices[k as usize])
+    }
+
+    /// Below this |volume|, the center of buoyancy is round-off and is replaced by the surface point.
+    fn volume_tolerance(&self) -> T {
+        self.volume_scale * T::default_epsilon() * T::lit(64.0)
+    }
+
+    /// Builds the result of a volume method from sums about `origin` (mesh frame, relative to
+    /// the centroid).
+    ///
+    /// With `M` the first moment about `origin`, `C − w = R(origin + M/V)` and
+    /// `τ = (C − w) × ρgV n = ρg R(origin×n_l·V + M × n_l)`; `origin` is either 0 or along
+    /// `n_l`, so `τ = ρg R(M × n_l)`, with no division by V.
+    fn volume_result(
+        &self,
+        frame: &Frame<T>,
+        water: &Water<T>,
+        sums: VolumeSums<T>,
+        origin: Vector3<T>,
+    ) -> Buoyancy<T> {
+        let volume = sums.volume6 / T::lit(6.0);
+        let moment = sums.moment24 / T::lit(24.0);
+        let weight = water.specific_weight();
+        let center_of_buoyancy = if volume.abs() > self.volume_tolerance() {
+            frame.center_of_mass + frame.rotation * (origin + moment / volume)
+        } else {
+            frame.surface_point()
+        };
+        self.finish(
+            frame,
+            sums.counts,
+            volume,
+            center_of_buoyancy,
+            frame.normal * (weight * volume),
+            frame.rotation * moment.cross(&frame.normal_local) * weight,
+        )
+    }
+
+    /// Builds the result of a surface method from sums about the centroid (mesh frame).
+    fn surface_result(&self, frame: &Frame<T>, water: &Water<T>, sums: SurfaceSums<T>) -> Buoyancy<T> {
+        let weight = water.specific_weight();
+        let force = sums.force6 / T::lit(6.0);
+        let volume = frame.normal_local.dot(&force);
+        let center_of_buoyancy = if volume.abs() > self.volume_tolerance() {
+            frame.center_of_mass + frame.rotation * (sums.moment24 / (T::lit(24.0) * volume))
+        } else {
+            frame.surface_point()
+        };
+        self.finish(
+            frame,
+            sums.counts,
+            volume,
+            center_of_buoyancy,
+            frame.rotation * force * weight,
+            frame.rotation * sums.torque24 * (weight / T::lit(24.0)),
+        )
+    }
+
+    fn finish(
+        &self,
+        frame: &Frame<T>,
+        counts: Counts,
+        submerged_volume: T,
+        center_of_buoyancy: Point3<T>,
+        force: Vector3<T>,
+        torque: Vector3<T>,
+    ) -> Buoyancy<T> {
+        Buoyancy {
+            submerged_volume,
+            center_of_buoyancy,
+            force,
+            torque,
+            torque_point: frame.center_of_mass,
+            fully_submerged: counts.full,
+            partially_submerged: counts.partial,
+        }
+    }
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Side {
+    /// Every vertex at or below the surface.
+    Below,
+    /// Some vertex strictly below, some strictly above.
+    Crossing,
+    /// No vertex strictly below.
+    Above,
+}
+
+/// Where a triangle is, from its vertex heights. A triangle lying in the surface is `Below`
+/// (it closes the submerged volume); one touching it from above is `Above`.
+#[inline(always)]
+fn classify<T: Real>(h: &[T; 3]) -> Side {
+    let zero = T::zero();
+    if h[0] <= zero && h[1] <= zero && h[2] <= zero {
+        Side::Below
+    } else if h[0] >= zero && h[1] >= zero && h[2] >= zero {
+        Side::Above
+    } else {
+        Side::Crossing
+    }
+}
+
+/// Sums `add(&mut sums, i)` over `i in 0..len`, in chunks of [`CHUNK`] combined in a fixed
+/// pairwise tree, on rayon's pool when `parallel` (and the `rayon` feature) is on.
+fn reduce<S: Sums, F: Fn(&mut S, usize) + Sync>(len: usize, parallel: bool, add: &F) -> S {
+    fn range<S: Sums, F: Fn(&mut S, usize) + Sync>(lo: usize, hi: usize, parallel: bool, add: &F) -> S {
+        if hi - lo <= CHUNK {
+            let mut sums = S::zero();
+            for i in lo..hi {
+                add(&mut sums, i);
+            }
+            return sums;
+        }
+        let mid = lo + (hi - lo).div_ceil(CHUNK) / 2 * CHUNK;
+        let (left, right) = join(
+            parallel,
+            || range(lo, mid, parallel, add),
+            || range(mid, hi, parallel, add),
+        );
+        left.merge(right)
+    }
+    range(0, len, parallel, add)
+}
+
+#[cfg(feature = "rayon")]
+#[inline]
+fn join<A: Send, B: Send>(
+    parallel: bool,
+    a: impl FnOnce() -> A + Send,
+    b: impl FnOnce() -> B + Send,
+) -> (A, B) {
+    if parallel { rayon::join(a, b) } else { (a(), b()) }
+}
+
+#[cfg(not(feature = "rayon"))]
+#[inline]
+fn join<A, B>(_parallel: bool, a: impl FnOnce() -> A, b: impl FnOnce() -> B) -> (A, B) {
+    (a(), b())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape;
+    use nalgebra::{Translation3, Vector3};
+
+    fn at(x: f64, y: f64, z: f64) -> Pose<f64> {
+        Pose::from_parts(Translation3::new(x, y, z), UnitQuaternion::identity())
+    }
+
+    #[test]
+    fn half_submerged_cube_all_methods() {
+        let (v, t) = shape::cube::<f64>(4);
+        let cube = Mesh::new(v, t).unwrap();
+        let water = Water::default();
+        for method in Method::ALL {
+            let b = cube.buoyancy(&at(0.0, 0.0, 0.0), &water, method).unwrap();
+            assert!(b.force.x.abs() < 1e-9 && b.force.z.abs() < 1e-9, "{method}");
+            if method.is_exact() {
+                assert!((b.submerged_volume - 0.5).abs() < 1e-14, "{method}: {b:?}");
+                assert!((b.center_of_buoyancy - Point3::new(0.0, -0.25, 0.0)).norm() < 1e-14);
+                assert!((b.force.y - 0.5 * 9810.0).abs() < 1e-9);
+                assert!(b.torque.norm() < 1e-10, "{method}: {:?}", b.torque);
+            }
+        }
+    }
+
+    #[test]
+    fn dry_body_has_no_force_and_a_finite_center() {
+        let (v, t) = shape::cube::<f64>(2);
+        let cube = Mesh::new(v, t).unwrap();
+        for method in Method::ALL {
+            let b = cube.buoyancy(&at(1.0, 3.0, 2.0), &Water::default(), method).unwrap();
+            assert_eq!(b.submerged_volume, 0.0);
+            assert_eq!(b.force, Vector3::zeros());
+            assert_eq!(b.torque, Vector3::zeros());
+            assert_eq!(b.center_of_buoyancy, Point3::new(1.0, 0.0, 2.0));
+            assert_eq!((b.fully_submerged, b.partially_submerged), (0, 0));
+        }
+    }
+
+    #[test]
+    fn invalid_poses_are_errors() {
+        let (v, t) = shape::cube::<f64>(1);
+        let cube = Mesh::new(v, t).unwrap();
+        let w = Water::default();
+        let e = cube.buoyancy(&at(f64::NAN, 0.0, 0.0), &w, Method::Exact).unwrap_err();
+        assert!(matches!(e, Error::InvalidPose { .. }), "{e}");
+        let mut pose = at(0.0, 0.0, 0.0);
+        pose.rotation = UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(0.0, 0.0, 0.0, 0.0));
+        assert!(matches!(cube.buoyancy(&pose, &w, Method::Exact), Err(Error::InvalidPose { .. })));
+        pose.rotation = UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(f64::INFINITY, 0.0, 0.0, 0.0));
+        assert!(matches!(cube.buoyancy(&pose, &w, Method::Exact), Err(Error::InvalidPose { .. })));
+        // A drifted quaternion is renormalised.
+        pose.rotation = UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(2.0, 0.0, 0.0, 0.0));
+        let b = cube.buoyancy(&pose, &w, Method::Exact).unwrap();
+        assert!((b.submerged_volume - 0.5).abs() < 1e-14);
+        // Overflow is reported, not returned as infinity.
+        let huge = at(0.0, -1e300, 0.0);
+        let big_water = Water::new(1e300, 1e10, Vector3::y(), 0.0).unwrap();
+        assert_eq!(cube.buoyancy(&huge, &big_water, Method::Exact), Err(Error::NonFiniteResult));
+    }
+
+    #[test]
+    fn reduction_tree_is_fixed() {
+        // Sums of indices through the pairwise tree equal the closed form, for lengths around
+        // chunk boundaries.
+        #[derive(Clone, Copy)]
+        struct Count(u64);
+        impl Sums for Count {
+            fn zero() -> Self {
+                Count(0)
+            }
+            fn merge(self, o: Self) -> Self {
+                Count(self.0 + o.0)
+            }
+        }
+        for len in [0, 1, CHUNK - 1, CHUNK, CHUNK + 1, 5 * CHUNK + 7] {
+            let s = reduce(len, true, &|s: &mut Count, i| s.0 += i as u64);
+            assert_eq!(s.0, (len as u64) * (len as u64).saturating_sub(1) / 2);
+        }
+    }
+}

@@ -1,0 +1,34 @@
+use nalgebra::RealField;
+
+/// The scalar type of a computation: `f32` (what rapier uses) or `f64` (what Python uses).
+///
+/// Every type of this crate is generic over it; there is no mixed precision inside an
+/// evaluation.
+pub trait Real: RealField + Copy + Send + Sync + 'static {
+    /// Converts an `f64` constant to this scalar type (rounding for `f32`).
+    fn lit(x: f64) -> Self;
+    /// Converts to `f64` (exact for both implementors).
+    fn to_f64(self) -> f64;
+}
+
+impl Real for f32 {
+    #[inline(always)]
+    fn lit(x: f64) -> Self {
+        x as f32
+    }
+    #[inline(always)]
+    fn to_f64(self) -> f64 {
+        self as f64
+    }
+}
+
+impl Real for f64 {
+    #[inline(always)]
+    fn lit(x: f64) -> Self {
+        x
+    }
+    #[inline(always)]
+    fn to_f64(self) -> f64 {
+        self
+    }
+}

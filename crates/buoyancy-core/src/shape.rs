@@ -1,0 +1,256 @@
+//! Procedural closed meshes: cube, UV sphere, torus and torus knot.
+//!
+//! Each function returns `(vertices, triangles)` ready for [`Mesh::new`](crate::Mesh::new):
+//! closed 2-manifolds wound counter-clockwise seen from outside, with shared (welded) vertices.
+
+use alloc::vec::Vec;
+use core::f64::consts::TAU;
+
+use nalgebra::{Point3, Vector3};
+
+use crate::Real;
+
+/// Vertices and outward-wound triangles of a procedural mesh.
+pub type Shape<T> = (Vec<Point3<T>>, Vec<[u32; 3]>);
+
+fn finish<T: Real>(vertices: Vec<Point3<f64>>, triangles: Vec<[u32; 3]>) -> Shape<T> {
+    (vertices.into_iter().map(|p| p.map(T::lit)).collect(), triangles)
+}
+
+/// The unit cube `[-1/2, 1/2]³`, each face split into `n × n` squares of two triangles:
+/// `12·n²` triangles (`n = 10`: 1,200; `n = 100`: 120,000, the paper's two cubes).
+///
+/// Panics if `n == 0`.
+pub fn cube<T: Real>(n: usize) -> Shape<T> {
+    assert!(n > 0, "a cube needs at least one square per face");
+    let side = n + 1;
+    // Lattice points (i, j, k) ∈ [0, n]³ on the surface get an index on first use.
+    let mut index = alloc::vec![u32::MAX; side * side * side];
+    let mut vertices = Vec::new();
+    let mut triangles = Vec::with_capacity(12 * n * n);
+    let mut vertex = |p: [usize; 3]| -> u32 {
+        let slot = &mut index[(p[0] * side + p[1]) * side + p[2]];
+        if *slot == u32::MAX {
+            *slot = vertices.len() as u32;
+            vertices.push(Point3::from(Vector3::from(p.map(|c| c as f64 / n as f64 - 0.5))));
+        }
+        *slot
+    };
+    // For each face: the fixed axis, its value, and two in-face axes (u, v) with u × v pointing out.
+    for axis in 0..3 {
+        let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+        for (fixed, (u, v)) in [(n, (u, v)), (0, (v, u))] {
+            for a in 0..n {
+                for b in 0..n {
+                    let corner = |da: usize, db: usize| {
+                        let mut p = [0; 3];
+                        p[axis] = fixed;
+                        p[u] = a + da;
+                        p[v] = b + db;
+                        p
+                    };
+                    let q = [corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)].map(&mut vertex);
+                    triangles.push([q[0], q[1], q[2]]);
+                    triangles.push([q[0], q[2], q[3]]);
+                }
+            }
+        }
+    }
+    finish(vertices, triangles)
+}
+
+/// A UV sphere of `radius` about the origin with `slices` segments around the y axis and
+/// `stacks` from pole to pole: `2·slices·(stacks − 1)` triangles, single vertices at the poles
+/// (`50, 50`: 4,900; `200, 200`: 79,600). Every vertex lies on the sphere; the mesh is convex.
+///
+/// Panics if `slices < 3` or `stacks < 2`.
+pub fn uv_sphere<T: Real>(radius: f64, slices: usize, stacks: usize) -> Shape<T> {
+    assert!(slices >= 3 && stacks >= 2, "a UV sphere needs slices >= 3 and stacks >= 2");
+    let mut vertices = Vec::with_capacity(2 + slices * (stacks - 1));
+    vertices.push(Point3::new(0.0, radius, 0.0));
+    for i in 1..stacks {
+        let polar = core::f64::consts::PI * i as f64 / stacks as f64;
+        for j in 0..slices {
+            let azimuth = TAU * j as f64 / slices as f64;
+            vertices.push(Point3::new(
+                radius * libm::sin(polar) * libm::cos(azimuth),
+                radius * libm::cos(polar),
+                -radius * libm::sin(polar) * libm::sin(azimuth),
+            ));
+        }
+    }
+    let south = vertices.len() as u32;
+    vertices.push(Point3::new(0.0, -radius, 0.0));
+    let ring = |i: usize, j: usize| (1 + (i - 1) * slices + j % slices) as u32;
+    let mut triangles = Vec::with_capacity(2 * slices * (stacks - 1));
+    for j in 0..slices {
+        triangles.push([0, ring(1, j), ring(1, j + 1)]);
+        triangles.push([south, ring(stacks - 1, j + 1), ring(stacks - 1, j)]);
+    }
+    for i in 1..stacks - 1 {
+        for j in 0..slices {
+            let (a, b, c, d) = (ring(i, j), ring(i + 1, j), ring(i + 1, j + 1), ring(i, j + 1));
+            triangles.push([a, b, c]);
+            triangles.push([a, c, d]);
+        }
+    }
+    finish(vertices, triangles)
+}
+
+/// A torus about the y axis: tube of radius `minor` around a circle of radius `major`,
+/// `segments` around the axis and `sides` around the tube: `2·segments·sides` triangles.
+///
+/// Panics if `segments < 3` or `sides < 3`.
+pub fn torus<T: Real>(major: f64, minor: f64, segments: usize, sides: usize) -> Shape<T> {
+    tube(segments, sides, minor, |u| {
+        let (s, c) = (libm::sin(u), libm::cos(u));
+        (Vector3::new(major * c, 0.0, -major * s), Vector3::new(-s, 0.0, -c))
+    })
+}
+
+/// A `(p, q)` torus knot (`p = 2, q = 3`: the trefoil) on a torus of radius `radius`, swept by a
+/// tube of radius `tube_radius`: `2·segments·sides` triangles (`80, 11`: 1,760, the size of the
+/// paper's torus knot).
+///
+/// Panics if `segments < 3` or `sides < 3`.
+pub fn torus_knot<T: Real>(
+    p: u32,
+    q: u32,
+    radius: f64,
+    tube_radius: f64,
+    segments: usize,
+    sides: usize,
+) -> Shape<T> {
+    let (p, q) = (p as f64, q as f64);
+    let point = |u: f64| {
+        let r = radius * (2.0 + libm::cos(q * u)) / 2.0;
+        Vector3::new(r * libm::cos(p * u), r * libm::sin(p * u), radius * libm::sin(q * u) / 2.0)
+    };
+    tube(segments, sides, tube_radius, move |u| {
+        // Central differences: the tangent is only needed up to scale.
+        let du = 1e-4;
+        (point(u), point(u + du) - point(u - du))
+    })
+}
+
+/// Sweeps a circle of radius `r` along a closed curve `u ∈ [0, 2π) ↦ (point, tangent)`, with a
+/// frame transported by projection so that the tube does not twist over one turn.
+fn tube<T: Real>(
+    segments: usize,
+    sides: usize,
+    r: f64,
+    curve: impl Fn(f64) -> (Vector3<f64>, Vector3<f64>),
+) -> Shape<T> {
+    assert!(segments >= 3 && sides >= 3, "a tube needs segments >= 3 and sides >= 3");
+    let mut vertices = Vec::with_capacity(segments * sides);
+    let frames: Vec<_> = (0..segments)
+        .map(|i| curve(TAU * i as f64 / segments as f64))
+        .collect();
+    // A normal per segment: Frenet-free, from a fixed axis least aligned with the first tangent,
+    // then carried along by projecting out each new tangent.
+    let first_tangent = frames[0].1.normalize();
+    let helper = [Vector3::x(), Vector3::y(), Vector3::z()]
+        .into_iter()
+        .min_by(|a, b| a.dot(&first_tangent).abs().total_cmp(&b.dot(&first_tangent).abs()))
+        .unwrap_or_else(Vector3::x);
+    let mut normal = (helper - first_tangent * helper.dot(&first_tangent)).normalize();
+    for (center, tangent) in &frames {
+        let tangent = tangent.normalize();
+        normal = (normal - tangent * normal.dot(&tangent)).normalize();
+        let binormal = tangent.cross(&normal);
+        for j in 0..sides {
+            let angle = TAU * j as f64 / sides as f64;
+            let out = normal * libm::cos(angle) + binormal * libm::sin(angle);
+            vertices.push(Point3::from(center + out * r));
+        }
+    }
+    // The transported frame may come back rotated after one turn; reconnect the last ring to
+    // the first by the side offset that matches best, so the seam does not twist the tube.
+    let last = (segments - 1) * sides;
+    let shift = (0..sides)
+        .min_by(|&a, &b| {
+            let d = |s: usize| (vertices[last] - vertices[s]).norm_squared();
+            d(a).total_cmp(&d(b))
+        })
+        .unwrap_or(0);
+    let index = |i: usize, j: usize| -> u32 {
+        if i == segments {
+            ((j + shift) % sides) as u32
+        } else {
+            (i * sides + j % sides) as u32
+        }
+    };
+    let mut triangles = Vec::with_capacity(2 * segments * sides);
+    for i in 0..segments {
+        for j in 0..sides {
+            let (a, b, c, d) = (index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1));
+            triangles.push([a, d, c]);
+            triangles.push([a, c, b]);
+        }
+    }
+    finish(vertices, triangles)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Mesh;
+    use core::f64::consts::PI;
+
+    #[test]
+    fn cube_is_closed_unit_and_centered() {
+        for n in [1, 3, 10] {
+            let (v, t) = cube::<f64>(n);
+            assert_eq!(t.len(), 12 * n * n);
+            assert_eq!(v.len(), 6 * n * n + 2);
+            let m = Mesh::new(v, t).unwrap();
+            assert!(!m.was_reoriented());
+            assert!((m.volume() - 1.0).abs() < 1e-13);
+            assert!(m.centroid().coords.norm() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn sphere_volume_converges() {
+        let (v, t) = uv_sphere::<f64>(1.0, 50, 50);
+        assert_eq!(t.len(), 4900);
+        let m = Mesh::new(v, t).unwrap();
+        assert!(!m.was_reoriented());
+        let ball = 4.0 / 3.0 * PI;
+        assert!(m.volume() < ball && m.volume() > 0.99 * ball, "{}", m.volume());
+    }
+
+    #[test]
+    fn torus_volume() {
+        let (v, t) = torus::<f64>(2.0, 0.5, 128, 64);
+        let m = Mesh::new(v, t).unwrap();
+        assert!(!m.was_reoriented());
+        // Pappus on the inscribed polygons: a 64-gon of circumradius 0.5 swept by a 128-gon of
+        // radius 2 (the 64-gon's centroid is on the circle of radius 2).
+        let polygon = |k: f64| k / TAU * libm::sin(TAU / k);
+        let exact = PI * 0.25 * polygon(64.0) * TAU * 2.0 * polygon(128.0);
+        assert!((m.volume() / exact - 1.0).abs() < 1e-12, "{} vs {exact}", m.volume());
+    }
+
+    #[test]
+    fn torus_knot_is_closed_and_outward() {
+        let (v, t) = torus_knot::<f64>(2, 3, 1.0, 0.25, 80, 11);
+        assert_eq!(t.len(), 1760);
+        assert!(!Mesh::new(v, t).unwrap().was_reoriented());
+        let (v, t) = torus_knot::<f64>(2, 3, 1.0, 0.25, 800, 64);
+        let m = Mesh::new(v, t).unwrap();
+        // A tube of radius r along a curve of length L encloses about π r² L.
+        let length: f64 = (0..10000)
+            .map(|i| {
+                let (a, b) = (TAU * i as f64 / 10000.0, TAU * (i + 1) as f64 / 10000.0);
+                let pt = |u: f64| {
+                    let r = (2.0 + libm::cos(3.0 * u)) / 2.0;
+                    Vector3::new(r * libm::cos(2.0 * u), r * libm::sin(2.0 * u), libm::sin(3.0 * u) / 2.0)
+                };
+                (pt(b) - pt(a)).norm()
+            })
+            .sum();
+        let expected = PI * 0.25 * 0.25 * length;
+        assert!((m.volume() / expected - 1.0).abs() < 3e-3, "{} vs {expected}", m.volume());
+    }
+}
