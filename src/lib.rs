@@ -1,5 +1,3 @@
-//! Exact buoyant force, center of buoyancy and torque on triangle meshes, in real time.
-//!
-//! This facade re-exports [`buoyancy_core`]; see its documentation.
+#![doc = include_str!("../README.md")]
 #![no_std]
 pub use buoyancy_core::*;
