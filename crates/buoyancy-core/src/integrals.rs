@@ -91,6 +91,18 @@ impl<T: Real> Sums for VolumeSums<T> {
     }
 }
 
+impl<S: Sums> Sums for [S; 2] {
+    #[inline]
+    fn zero() -> Self {
+        [S::zero(), S::zero()]
+    }
+    #[inline]
+    fn merge(self, [c, d]: Self) -> Self {
+        let [a, b] = self;
+        [a.merge(c), b.merge(d)]
+    }
+}
+
 impl<T: Real> Sums for SurfaceSums<T> {
     #[inline]
     fn zero() -> Self {
@@ -144,7 +156,8 @@ impl<T: Real> SurfaceSums<T> {
 
 /// Calls `emit` with the part of triangle `p` (vertex heights `h`) that lies under water, as one
 /// or two triangles with the orientation of `p` and their vertex heights (exactly zero on the
-/// waterline).
+/// waterline), and returns the waterline segment oriented as the *cap* (the part of the water
+/// plane inside the body, facing up) traverses it: opposite to the submerged part's boundary.
 ///
 /// Precondition: the triangle crosses the plane, `min(h) < 0 < max(h)`. A vertex with `h = 0`
 /// counts as under water; the result is continuous in `h` either way. The "odd" vertex, alone
@@ -156,7 +169,7 @@ pub(crate) fn clip_below<T: Real>(
     p: [Vector3<T>; 3],
     h: [T; 3],
     mut emit: impl FnMut([Vector3<T>; 3], [T; 3]),
-) {
+) -> [Vector3<T>; 2] {
     let zero = T::zero();
     let below = [h[0] <= zero, h[1] <= zero, h[2] <= zero];
     let below_count = below.iter().filter(|&&b| b).count();
@@ -176,10 +189,14 @@ pub(crate) fn clip_below<T: Real>(
     let ab = a + (b - a) * (ha / (ha - hb));
     let ca = a + (c - a) * (ha / (ha - hc));
     if odd_is_below {
+        // Submerged: (a, ab, ca), whose boundary runs ab → ca along the waterline.
         emit([a, ab, ca], [ha, zero, zero]);
+        [ca, ab]
     } else {
+        // Submerged: (ab, b, c, ca), whose boundary runs ca → ab along the waterline.
         emit([ab, b, c], [zero, hb, hc]);
         emit([ab, c, ca], [zero, hc, zero]);
+        [ab, ca]
     }
 }
 

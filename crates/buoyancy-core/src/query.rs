@@ -130,9 +130,11 @@ impl<T: Real> Frame<T> {
     }
 
     /// Heights above the surface of vertices given relative to the centroid, mesh frame.
+    /// (Written out: `array::map` does not always optimise away in this hot loop.)
     #[inline(always)]
     fn heights(&self, v: &[Vector3<T>; 3]) -> [T; 3] {
-        v.map(|v| self.normal_local.dot(&v) + self.height)
+        let n = &self.normal_local;
+        [n.dot(&v[0]) + self.height, n.dot(&v[1]) + self.height, n.dot(&v[2]) + self.height]
     }
 
     /// The projection of the center of mass onto the surface, world frame.
@@ -199,27 +201,60 @@ impl<T: Real> Mesh<T> {
                 self.volume_result(&frame, water, sums, Vector3::zeros())
             }
             Method::Improved | Method::Exact => {
-                let exact = method == Method::Exact;
-                // Positions relative to o, the projection of the centroid on the plane.
-                let shift = n * frame.height;
-                let sums = reduce(self.triangles.len(), parallel, &|s: &mut VolumeSums<T>, i| {
+                // Sums about the centroid: the fully submerged triangles contribute the
+                // precomputed tetrahedra of `Fast`, the waterline triangles their clipped part,
+                // and the cap closing the submerged volume on the water plane a fan of
+                // tetrahedra from `apex`, the projection of the centroid on the plane, over the
+                // waterline segments. Only the waterline costs more than `Fast`.
+                let apex = n * -frame.height;
+                let improved = method == Method::Improved;
+                let sums = reduce(self.triangles.len(), parallel, &|s: &mut [VolumeSums<T>; 2], i| {
+                    let [exact, clipped] = s;
                     let v = self.corners(i);
                     let h = frame.heights(&v);
                     match classify(&h) {
                         Side::Below => {
-                            s.add_tetrahedron(v.map(|v| v + shift));
-                            s.counts.full += 1;
+                            exact.volume6 += self.tetra_volume6[i];
+                            exact.moment24 += self.tetra_moment24[i];
+                            exact.counts.full += 1;
+                            // An edge lying in the surface bounds the cap too, unless the
+                            // neighbour across it is submerged and cancels it.
+                            let zero = T::zero();
+                            if h[0] == zero || h[1] == zero || h[2] == zero {
+                                for k in 0..3 {
+                                    let j = (k + 1) % 3;
+                                    if h[k] == zero && h[j] == zero {
+                                        exact.add_tetrahedron([apex, v[j], v[k]]);
+                                    }
+                                }
+                            }
                         }
                         Side::Crossing => {
-                            s.counts.partial += 1;
-                            if exact {
-                                clip_below(v.map(|v| v + shift), h, |p, _| s.add_tetrahedron(p));
-                            }
+                            exact.counts.partial += 1;
+                            let [from, to] = clip_below(v, h, |p, _| {
+                                exact.add_tetrahedron(p);
+                                if improved {
+                                    // Improved leaves these out; remember them about `apex`.
+                                    clipped.add_tetrahedron([p[0] - apex, p[1] - apex, p[2] - apex]);
+                                }
+                            });
+                            exact.add_tetrahedron([apex, from, to]);
                         }
                         Side::Above => {}
                     }
                 });
-                self.volume_result(&frame, water, sums, -shift)
+                let [exact, clipped] = sums;
+                if improved {
+                    // Improved = tetrahedra from `apex` over the fully submerged triangles
+                    // = the exact volume about `apex` minus the clipped parts about `apex`.
+                    let volume6 = exact.volume6 - clipped.volume6;
+                    // First moment about apex: Σ det·(a+b+c − 4·apex) = moment24 − 4·apex·volume6.
+                    let moment24 = exact.moment24 - apex * (T::lit(4.0) * exact.volume6) - clipped.moment24;
+                    let sums = VolumeSums { volume6, moment24, counts: exact.counts };
+                    self.volume_result(&frame, water, sums, apex)
+                } else {
+                    self.volume_result(&frame, water, exact, Vector3::zeros())
+                }
             }
             Method::FastSurface | Method::ExactSurface => {
                 let exact = method == Method::ExactSurface;
@@ -251,9 +286,11 @@ impl<T: Real> Mesh<T> {
         }
     }
 
+    /// The corners of triangle `i`, relative to the centroid, mesh frame.
     #[inline(always)]
     fn corners(&self, i: usize) -> [Vector3<T>; 3] {
-        self.triangles[i].map(|k| self.vertices[k as usize])
+        let [a, b, c] = self.triangles[i];
+        [self.vertices[a as usize], self.vertices[b as usize], self.vertices[c as usize]]
     }
 
     /// Below this |volume|, the center of buoyancy is round-off and is replaced by the surface point.

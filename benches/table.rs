@@ -1,0 +1,167 @@
+//! Prints the paper's Table 1 with this library's figures beside it, and writes it, with a
+//! description of the machine, between the markers of `benches/RESULTS.md`.
+//!
+//! `cargo bench --bench table --features rayon`
+//!
+//! Each figure is the mean time of one evaluation over the paper's 100 poses (from almost dry to
+//! almost submerged), the median of 7 batches of at least 50 ms.
+
+mod common;
+
+use std::fmt::Write as _;
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+use buoyancy::{Method, Real};
+
+const BEGIN: &str = "<!-- table:begin (written by `cargo bench --bench table`) -->";
+const END: &str = "<!-- table:end -->";
+
+/// Median over batches of the mean time of one call of `evaluate_all` divided by `per_call`.
+fn microseconds(per_call: usize, mut evaluate_all: impl FnMut()) -> f64 {
+    evaluate_all();
+    let mut batches: Vec<f64> = (0..7)
+        .map(|_| {
+            let started = Instant::now();
+            let mut calls = 0;
+            while started.elapsed() < Duration::from_millis(50) || calls < 2 {
+                evaluate_all();
+                calls += 1;
+            }
+            started.elapsed().as_secs_f64() * 1e6 / (calls * per_call) as f64
+        })
+        .collect();
+    batches.sort_by(f64::total_cmp);
+    batches[batches.len() / 2]
+}
+
+/// µs per evaluation of every method on every model.
+fn measure<T: Real>(models: &[common::Model<T>], parallel: bool) -> Vec<[f64; 5]> {
+    let water = common::water::<T>();
+    models
+        .iter()
+        .map(|model| {
+            let poses = common::poses(&model.mesh);
+            Method::ALL.map(|method| {
+                microseconds(poses.len(), || {
+                    for pose in &poses {
+                        #[cfg(feature = "rayon")]
+                        if parallel {
+                            black_box(model.mesh.par_buoyancy(black_box(pose), &water, method).unwrap());
+                            continue;
+                        }
+                        let _ = parallel;
+                        black_box(model.mesh.buoyancy(black_box(pose), &water, method).unwrap());
+                    }
+                })
+            })
+        })
+        .collect()
+}
+
+fn method_label(m: Method) -> &'static str {
+    match m {
+        Method::Fast => "Fast",
+        Method::Improved => "Improved",
+        Method::Exact => "Exact",
+        Method::FastSurface => "Fast Surface",
+        Method::ExactSurface => "Exact Surface",
+    }
+}
+
+fn table(names: &[String], figures: &[[f64; 5]], paper: Option<&[[f64; 5]]>) -> String {
+    let mut out = String::from("| |");
+    for name in names {
+        let _ = write!(out, " {name} |");
+    }
+    out += "\n|---|";
+    out += &"---|".repeat(names.len());
+    out += "\n";
+    for (k, method) in Method::ALL.iter().enumerate() {
+        let _ = write!(out, "| {} |", method_label(*method));
+        for (i, f) in figures.iter().enumerate() {
+            match paper {
+                Some(p) => {
+                    let ms = p[i][k];
+                    let _ = write!(out, " {:.2} µs ({ms} ms, {:.0}×) |", f[k], ms * 1e3 / f[k]);
+                }
+                None => {
+                    let _ = write!(out, " {:.2} µs |", f[k]);
+                }
+            }
+        }
+        out += "\n";
+    }
+    out
+}
+
+fn machine() -> String {
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| s.lines().find(|l| l.starts_with("model name")).map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string()))
+        .unwrap_or_else(|| "unknown CPU".into());
+    let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
+    let rustc = std::process::Command::new(std::env::var("RUSTC").unwrap_or_else(|_| "rustc".into()))
+        .arg("--version")
+        .output()
+        .ok()
+        .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+        .unwrap_or_else(|| "rustc (unknown version)".into());
+    format!("{cpu}, {cores} cores available; {rustc}; {} {}", std::env::consts::OS, std::env::consts::ARCH)
+}
+
+fn main() {
+    // `cargo bench` passes `--bench`; ignore arguments.
+    let models64 = common::models::<f64>(true);
+    let models32 = common::models::<f32>(true);
+    let (paper_models, large): (Vec<_>, Vec<_>) = models64.iter().enumerate().partition(|(_, m)| m.paper_ms.is_some());
+    let paper_idx: Vec<usize> = paper_models.iter().map(|(i, _)| *i).collect();
+    let large_idx: Vec<usize> = large.iter().map(|(i, _)| *i).collect();
+
+    let serial64 = measure(&models64, false);
+    let serial32 = measure(&models32, false);
+    let names = |idx: &[usize]| idx.iter().map(|&i| models64[i].name.clone()).collect::<Vec<_>>();
+    let pick = |f: &[[f64; 5]], idx: &[usize]| idx.iter().map(|&i| f[i]).collect::<Vec<_>>();
+
+    let mut report = format!("Machine: {}\n\n", machine());
+    report += "Mean time per evaluation over the paper's 100 poses, one thread, f64 (the paper's figure and our speed-up in parentheses):\n\n";
+    let paper: Vec<[f64; 5]> = paper_idx.iter().map(|&i| models64[i].paper_ms.unwrap()).collect();
+    report += &table(&names(&paper_idx), &pick(&serial64, &paper_idx), Some(&paper));
+    report += "\nThe same in f32:\n\n";
+    report += &table(&names(&paper_idx), &pick(&serial32, &paper_idx), None);
+    if !large_idx.is_empty() {
+        report += "\nThe procedural mesh of 10⁶ triangles, f64 and f32, one thread:\n\n";
+        let both: Vec<[f64; 5]> = large_idx.iter().flat_map(|&i| [serial64[i], serial32[i]]).collect();
+        let labels: Vec<String> = large_idx.iter().flat_map(|&i| [format!("{} f64", models64[i].name), format!("{} f32", models64[i].name)]).collect();
+        report += &table(&labels, &both, None);
+    }
+    #[cfg(feature = "rayon")]
+    {
+        let parallel64 = measure(&models64, true);
+        let threads = rayon::current_num_threads();
+        report += &format!("\nWith rayon on {threads} threads (`par_buoyancy`), f64, and the speed-up over one thread:\n\n");
+        let mut labels = names(&paper_idx);
+        labels.extend(names(&large_idx));
+        let all: Vec<usize> = paper_idx.iter().chain(&large_idx).copied().collect();
+        let mut out = table(&labels, &pick(&parallel64, &all), None);
+        for (k, _) in Method::ALL.iter().enumerate() {
+            let speedups: Vec<String> = all.iter().map(|&i| format!("{:.2}×", serial64[i][k] / parallel64[i][k])).collect();
+            let _ = writeln!(out, "| speed-up, {} | {} |", method_label(Method::ALL[k]), speedups.join(" | "));
+        }
+        report += &out;
+    }
+    #[cfg(not(feature = "rayon"))]
+    {
+        report += "\n(Run with `--features rayon` for the parallel figures.)\n";
+    }
+
+    println!("{report}");
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("benches/RESULTS.md");
+    let old = std::fs::read_to_string(&path).unwrap_or_default();
+    let new = match (old.find(BEGIN), old.find(END)) {
+        (Some(b), Some(e)) if b < e => format!("{}{BEGIN}\n{report}{}", &old[..b], &old[e..]),
+        _ => format!("{old}\n{BEGIN}\n{report}{END}\n"),
+    };
+    std::fs::write(&path, new).expect("writable benches/RESULTS.md");
+    eprintln!("written to {}", path.display());
+}
