@@ -10,9 +10,18 @@
 //! * `h_c = n·w − level` is its height above the surface,
 //!
 //! and the height of a vertex `x` (stored as `v = x − c`) is `h = n_l·v + h_c`. The sums are
-//! taken on `v` or on `v + h_c n_l` (relative to `o`, the projection of the center of mass on the
-//! plane), both small numbers even when the body is 10⁶ m from the world origin, and rotated to
-//! the world frame once at the end.
+//! taken on `v` (about the centroid) or on `v + h_c n_l` (about `o = −h_c n_l`, the projection of
+//! the centroid on the plane), both small numbers even when the body is 10⁶ m from the world
+//! origin, and rotated to the world frame once at the end.
+//!
+//! # Cost
+//! `Fast` sums precomputed tetrahedra (centroid to triangle) over the fully submerged
+//! triangles. `Exact` adds to the same sums the clipped waterline triangles and the cap: the
+//! part of the water plane inside the body, as a fan of tetrahedra from `o` over the waterline
+//! segments (and over mesh edges lying exactly in the plane, where a submerged triangle meets a
+//! dry one). So `Exact` costs `Fast` plus work on the waterline triangles only. `Improved` is
+//! `Exact` about `o` minus the clipped parts, i.e. the tetrahedra from `o` to the fully
+//! submerged triangles. The surface methods integrate the pressure triangle by triangle.
 //!
 //! # Determinism
 //! Triangles are summed in fixed chunks of [`CHUNK`] combined pairwise in a fixed tree, whether
