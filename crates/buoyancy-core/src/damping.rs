@@ -53,8 +53,9 @@ use crate::{Error, Mesh, Pose, Real, Water};
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DampingCoefficients<T: Real> {
     /// `c₁`, linear pressure-drag coefficient in Pa per m/s (N·s/m³): the pressure on a wetted
-    /// face moving into the water at 1 m/s. Default 500 (≈ ρ·0.5 m/s for fresh water): about
-    /// a tenth of critical damping for the heave of a 1 m cube floating half submerged.
+    /// face moving into the water at 1 m/s. Default 1000 (≈ ρ·1 m/s for fresh water): about a
+    /// fifth of critical damping on the down stroke of the heave of a 1 m cube floating half
+    /// submerged.
     pub linear: T,
     /// `C_D`, dimensionless pressure drag coefficient: the quadratic pressure is `½·ρ·C_D·u_n²`.
     /// Default 1 (a flat plate face-on is about 1.2, a sphere about 0.5).
@@ -70,7 +71,7 @@ pub struct DampingCoefficients<T: Real> {
 impl<T: Real> Default for DampingCoefficients<T> {
     fn default() -> Self {
         DampingCoefficients {
-            linear: T::lit(500.0),
+            linear: T::lit(1000.0),
             drag_coefficient: T::lit(1.0),
             angular_linear: T::lit(0.1),
             angular_quadratic: T::lit(0.1),
@@ -312,7 +313,7 @@ mod tests {
         // faces the flow; the sides are parallel to it.
         let c = cube(1.0);
         let d = damp(&c, &at(0.0, -3.0, 0.0), Vector3::new(0.0, -2.0, 0.0), Vector3::zeros());
-        let expected = 500.0 * 2.0 + 0.5 * 1000.0 * 1.0 * 4.0;
+        let expected = 1000.0 * 2.0 + 0.5 * 1000.0 * 1.0 * 4.0;
         assert!((d.force - Vector3::new(0.0, expected, 0.0)).norm() < 1e-9 * expected, "{d:?}");
         assert!(d.torque.norm() < 1e-9 * expected);
         assert!((d.wetted_area - 6.0).abs() < 1e-12 && (d.wetted_fraction - 1.0).abs() < 1e-12);
