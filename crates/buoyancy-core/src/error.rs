@@ -81,6 +81,15 @@ pub enum Error {
         /// What is wrong with it.
         reason: &'static str,
     },
+    /// A damping coefficient is negative or not finite, or the current is not finite.
+    InvalidDamping {
+        /// The coefficient's name, a field of `DampingCoefficients`.
+        parameter: &'static str,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// A linear or angular velocity has a NaN or infinite component.
+    InvalidVelocity,
     /// The result overflowed: the pose or the water parameters are too large for the scalar type.
     NonFiniteResult,
     /// A method name that is not one of [`Method::name`](crate::Method::name).
@@ -147,6 +156,12 @@ impl fmt::Display for Error {
                 write!(f, "invalid water {parameter}: {reason}")
             }
             Error::InvalidPose { reason } => write!(f, "invalid pose: {reason}"),
+            Error::InvalidDamping { parameter, reason } => {
+                write!(f, "invalid damping coefficient {parameter}: {reason}")
+            }
+            Error::InvalidVelocity => {
+                write!(f, "invalid velocity: a NaN or infinite component")
+            }
             Error::NonFiniteResult => write!(
                 f,
                 "the result overflowed: the pose, density or gravity is too large for this scalar type"

@@ -42,6 +42,7 @@ extern crate alloc;
 #[cfg(feature = "std")]
 extern crate std;
 
+pub mod damping;
 mod error;
 mod integrals;
 pub mod io;
@@ -52,6 +53,7 @@ mod real;
 pub mod shape;
 mod water;
 
+pub use damping::{Damping, DampingCoefficients};
 pub use error::Error;
 pub use mesh::Mesh;
 pub use method::Method;

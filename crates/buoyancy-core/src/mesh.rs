@@ -59,6 +59,8 @@ pub struct Mesh<T: Real> {
     pub(crate) tetra_moment24: Vec<Vector3<T>>,
     /// Largest distance of a vertex from the centroid.
     pub(crate) bounding_radius: T,
+    /// Total surface area, m².
+    pub(crate) surface_area: T,
     reoriented: bool,
 }
 
@@ -131,8 +133,10 @@ impl<T: Real> Mesh<T> {
         let mut tetra_volume6 = Vec::with_capacity(triangles.len());
         let mut tetra_moment24 = Vec::with_capacity(triangles.len());
         let mut volume_scale = 0.0;
+        let mut surface_area = 0.0;
         for t in &triangles {
             let [a, b, c] = t.map(|i| relative[i as usize]);
+            surface_area += (b - a).cross(&(c - a)).norm() / 2.0;
             let det = a.dot(&b.cross(&c));
             volume_scale += det.abs() / 6.0;
             tetra_volume6.push(T::lit(det));
@@ -148,6 +152,7 @@ impl<T: Real> Mesh<T> {
             tetra_volume6,
             tetra_moment24,
             bounding_radius: T::lit(bounding_radius),
+            surface_area: T::lit(surface_area),
             reoriented,
         })
     }
@@ -191,6 +196,11 @@ impl<T: Real> Mesh<T> {
     /// centroid that holds the mesh.
     pub fn bounding_radius(&self) -> T {
         self.bounding_radius
+    }
+
+    /// Total surface area in m² (the sum of the triangle areas).
+    pub fn surface_area(&self) -> T {
+        self.surface_area
     }
 }
 

@@ -95,20 +95,20 @@ impl<T: Real> Buoyancy<T> {
 }
 
 /// The water plane seen from the mesh frame, for one evaluation.
-struct Frame<T: Real> {
-    rotation: Matrix3<T>,
+pub(crate) struct Frame<T: Real> {
+    pub(crate) rotation: Matrix3<T>,
     /// World up normal.
-    normal: Vector3<T>,
+    pub(crate) normal: Vector3<T>,
     /// Up normal in the mesh frame, `Rᵀ n`.
-    normal_local: Vector3<T>,
+    pub(crate) normal_local: Vector3<T>,
     /// Center of mass, world frame.
-    center_of_mass: Point3<T>,
+    pub(crate) center_of_mass: Point3<T>,
     /// Height of the center of mass above the surface.
-    height: T,
+    pub(crate) height: T,
 }
 
 impl<T: Real> Frame<T> {
-    fn new(mesh: &Mesh<T>, pose: &Pose<T>, water: &Water<T>) -> Result<Self, Error> {
+    pub(crate) fn new(mesh: &Mesh<T>, pose: &Pose<T>, water: &Water<T>) -> Result<Self, Error> {
         let q = pose.rotation.quaternion().coords;
         if !q.iter().all(|c| c.is_finite()) {
             return Err(Error::InvalidPose {
@@ -141,7 +141,7 @@ impl<T: Real> Frame<T> {
     /// Heights above the surface of vertices given relative to the centroid, mesh frame.
     /// (Written out: `array::map` does not always optimise away in this hot loop.)
     #[inline(always)]
-    fn heights(&self, v: &[Vector3<T>; 3]) -> [T; 3] {
+    pub(crate) fn heights(&self, v: &[Vector3<T>; 3]) -> [T; 3] {
         let n = &self.normal_local;
         [n.dot(&v[0]) + self.height, n.dot(&v[1]) + self.height, n.dot(&v[2]) + self.height]
     }
@@ -297,7 +297,7 @@ impl<T: Real> Mesh<T> {
 
     /// The corners of triangle `i`, relative to the centroid, mesh frame.
     #[inline(always)]
-    fn corners(&self, i: usize) -> [Vector3<T>; 3] {
+    pub(crate) fn corners(&self, i: usize) -> [Vector3<T>; 3] {
         let [a, b, c] = self.triangles[i];
         [self.vertices[a as usize], self.vertices[b as usize], self.vertices[c as usize]]
     }

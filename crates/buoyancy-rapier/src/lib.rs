@@ -1,3 +1,453 @@
-//! Buoyancy for rapier3d rigid bodies (in development: the adapter is not written yet; this
-//! crate only re-exports the core so that the workspace layout is in place).
+//! Buoyancy and hydrodynamic damping for [rapier3d](https://rapier.rs) rigid bodies.
+//!
+//! [`FloatingBodies`] holds the bodies that float, their colliders turned into closed triangle
+//! meshes once, and the water. Call [`FloatingBodies::apply`] once per step, before
+//! `PhysicsPipeline::step`: it computes, for every registered body, the exact buoyancy of
+//! [`buoyancy_core`] and its hydrodynamic [damping](buoyancy_core::damping), and applies their
+//! sum as a force and a torque about the body's world center of mass.
+//!
+//! ```
+//! use buoyancy_rapier::{FloatOptions, FloatingBodies};
+//! use rapier3d::prelude::*;
+//!
+//! let mut world = PhysicsWorld::default(); // gravity (0, −9.81, 0): water y up, level 0
+//! let (crate_box, _) = world.insert(
+//!     RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 1.0, 0.0)),
+//!     ColliderBuilder::cuboid(0.5, 0.5, 0.5).density(500.0),
+//! );
+//! let mut water = FloatingBodies::new(world.gravity);
+//! water.register(crate_box, &world.bodies, &world.colliders, FloatOptions::default()).unwrap();
+//! for _ in 0..600 {
+//!     water.apply(&mut world.bodies, world.integration_parameters.dt);
+//!     world.step();
+//! }
+//! // Half the cube under water: its center sits at the surface.
+//! assert!(world.bodies[crate_box].translation().y.abs() < 0.01);
+//! ```
+//!
+//! # Forces the application adds itself
+//! rapier keeps the forces and torques added to a body (`RigidBody::add_force`) until
+//! `RigidBody::reset_forces`. The adapter never resets them: it remembers the force and torque
+//! it added at the previous [`apply`](FloatingBodies::apply) and adds only the difference, so the
+//! body's accumulated force is always *the application's own forces + this step's buoyancy and
+//! damping*. A constant thrust added once stays. If the application calls `reset_forces` or
+//! `reset_torques` on a registered body, it must then call [`FloatingBodies::forget_applied`]
+//! for it (the adapter's share was wiped too); [`FloatingBodies::unregister`] takes the
+//! adapter's share back off.
+//!
+//! # Frames and units
+//! Water, forces and torques are in rapier's world frame, SI units. Meshes are in the frame of
+//! their (sub-)shape, placed on the body by the collider's `position_wrt_parent`. Buoyancy and
+//! damping are computed in `f64` and applied in `f32`.
+//!
+//! # Stability
+//! The damping is explicit. So that a body dropped fast into the water cannot overshoot, the
+//! damping force is scaled down, when needed, so that over one step it can at most stop the
+//! body's velocity relative to the water (`|F|·dt ≤ m·|v|`), and the damping torque so that it
+//! can at most stop the rotation (`|I⁻¹τ|·dt ≤ |ω|`). A body whose pose, velocity or result is
+//! not finite gets no force from the adapter (and the previous one is taken back).
+#![warn(missing_docs)]
+
+mod convert;
+mod error;
+mod shapes;
+
+use std::collections::HashMap;
+
+use buoyancy_core::nalgebra::{Point3, Vector3};
+use buoyancy_core::{DampingCoefficients, Mesh, Method, Pose, Water};
+use rapier3d::math::Vector;
+use rapier3d::prelude::{ColliderHandle, ColliderSet, RigidBody, RigidBodyHandle, RigidBodySet};
+
 pub use buoyancy_core;
+pub use error::Error;
+
+use convert::{point_to_nalgebra, pose_to_nalgebra, vector_to_nalgebra, vector_to_rapier};
+use shapes::{append_meshes, FloatingPart};
+
+/// Which colliders of a body float.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub enum FloatingColliders {
+    /// Every collider attached to the body at registration.
+    #[default]
+    All,
+    /// Only these (each must be attached to the body).
+    Only(Vec<ColliderHandle>),
+}
+
+/// How one body floats: which colliders, how finely round shapes are meshed, and overrides of
+/// the world's method, water and damping.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FloatOptions {
+    /// The colliders that float. Default: all of them.
+    pub colliders: FloatingColliders,
+    /// Segments around a ball, cylinder, capsule or cone (half as many from pole to pole).
+    /// Default 32. Cuboids, convex polyhedra and trimeshes are used exactly.
+    pub subdivisions: u32,
+    /// This body's method; `None`: the world's ([`FloatingBodies::method`]).
+    pub method: Option<Method>,
+    /// This body's water; `None`: the world's ([`FloatingBodies::water`]).
+    pub water: Option<Water<f64>>,
+    /// This body's damping; `None`: the world's ([`FloatingBodies::damping`]).
+    pub damping: Option<DampingCoefficients<f64>>,
+}
+
+impl Default for FloatOptions {
+    fn default() -> Self {
+        FloatOptions {
+            colliders: FloatingColliders::All,
+            subdivisions: 32,
+            method: None,
+            water: None,
+            damping: None,
+        }
+    }
+}
+
+impl FloatOptions {
+    /// Only these colliders float.
+    pub fn colliders(mut self, colliders: impl IntoIterator<Item = ColliderHandle>) -> Self {
+        self.colliders = FloatingColliders::Only(colliders.into_iter().collect());
+        self
+    }
+    /// Segments around round shapes.
+    pub fn subdivisions(mut self, subdivisions: u32) -> Self {
+        self.subdivisions = subdivisions;
+        self
+    }
+    /// This body's method.
+    pub fn method(mut self, method: Method) -> Self {
+        self.method = Some(method);
+        self
+    }
+    /// This body's water.
+    pub fn water(mut self, water: Water<f64>) -> Self {
+        self.water = Some(water);
+        self
+    }
+    /// This body's damping ([`DampingCoefficients::off`] for none).
+    pub fn damping(mut self, damping: DampingCoefficients<f64>) -> Self {
+        self.damping = Some(damping);
+        self
+    }
+}
+
+/// What the adapter computed and applied for one body at the last [`FloatingBodies::apply`],
+/// world frame, SI units, torques about the body's world center of mass.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct FloatReport {
+    /// Volume under water, m³ (all floating parts).
+    pub submerged_volume: f64,
+    /// Center of buoyancy, m: the volume-weighted mean of the parts' centers (the projection
+    /// of the center of mass on the surface when nothing is under water).
+    pub center_of_buoyancy: Point3<f64>,
+    /// The body's world center of mass (rapier's), m.
+    pub center_of_mass: Point3<f64>,
+    /// Buoyant force, N.
+    pub buoyancy_force: Vector3<f64>,
+    /// Torque of the buoyancy about the center of mass, N·m.
+    pub buoyancy_torque: Vector3<f64>,
+    /// Damping force after the stability clamp, N.
+    pub damping_force: Vector3<f64>,
+    /// Damping torque after the stability clamp, N·m.
+    pub damping_torque: Vector3<f64>,
+    /// Wetted area, m².
+    pub wetted_area: f64,
+    /// Whether a pose, velocity or result was not finite, so that no force was applied.
+    pub skipped: bool,
+}
+
+/// One registered body.
+#[derive(Debug, Clone)]
+struct FloatingBody {
+    handle: RigidBodyHandle,
+    parts: Vec<FloatingPart>,
+    options: FloatOptions,
+    /// The force and torque the adapter has added to the body and not taken back yet.
+    applied_force: Vector,
+    applied_torque: Vector,
+    report: FloatReport,
+    /// What the next application adds: computed in parallel, applied serially.
+    pending: Option<(Vector, Vector)>,
+}
+
+/// The bodies that float in one rapier world, and their water.
+///
+/// The world's settings (water, method, damping) apply to every body without an override in
+/// its [`FloatOptions`].
+#[derive(Debug, Clone)]
+pub struct FloatingBodies {
+    water: Water<f64>,
+    method: Method,
+    damping: DampingCoefficients<f64>,
+    bodies: Vec<FloatingBody>,
+    index: HashMap<RigidBodyHandle, usize>,
+}
+
+impl FloatingBodies {
+    /// No bodies yet; fresh water (ρ = 1000 kg/m³) whose surface passes through the world
+    /// origin with its up normal opposite to `gravity` (y up if `gravity` is zero), with
+    /// `g = |gravity|`; [`Method::Exact`]; the default [`DampingCoefficients`].
+    pub fn new(gravity: Vector) -> Self {
+        let g = vector_to_nalgebra(gravity);
+        let water = Water::default()
+            .with_gravity(g.norm())
+            .and_then(|w| if g.norm() > 0.0 { w.with_surface(-g, 0.0) } else { Ok(w) })
+            .unwrap_or_default();
+        FloatingBodies {
+            water,
+            method: Method::Exact,
+            damping: DampingCoefficients::default(),
+            bodies: Vec::new(),
+            index: HashMap::new(),
+        }
+    }
+
+    /// The world's water.
+    pub fn water(&self) -> &Water<f64> {
+        &self.water
+    }
+    /// Sets the world's water (level, normal, density, gravity), e.g.
+    /// `fb.water().with_surface(normal, 2.0)?`.
+    pub fn set_water(&mut self, water: Water<f64>) {
+        self.water = water;
+    }
+    /// The same world with the surface at `level` m along its normal.
+    pub fn with_level(mut self, level: f64) -> Result<Self, Error> {
+        self.water = self.water.with_surface(self.water.normal().into_inner(), level)?;
+        Ok(self)
+    }
+    /// The world's method.
+    pub fn method(&self) -> Method {
+        self.method
+    }
+    /// Sets the world's method.
+    pub fn set_method(&mut self, method: Method) {
+        self.method = method;
+    }
+    /// The world's damping coefficients.
+    pub fn damping(&self) -> &DampingCoefficients<f64> {
+        &self.damping
+    }
+    /// Sets the world's damping coefficients ([`DampingCoefficients::off`] for none).
+    pub fn set_damping(&mut self, damping: DampingCoefficients<f64>) {
+        self.damping = damping;
+    }
+
+    /// Number of registered bodies.
+    pub fn len(&self) -> usize {
+        self.bodies.len()
+    }
+    /// Whether no body is registered.
+    pub fn is_empty(&self) -> bool {
+        self.bodies.is_empty()
+    }
+    /// Whether `body` is registered.
+    pub fn contains(&self, body: RigidBodyHandle) -> bool {
+        self.index.contains_key(&body)
+    }
+
+    /// Makes `body` float: turns its selected colliders into closed meshes (once) and
+    /// remembers them with `options`. Registering a body again replaces its meshes and options
+    /// (the force already applied is kept track of).
+    ///
+    /// # Errors
+    /// [`Error::UnknownBody`], [`Error::UnknownCollider`], [`Error::NotAttached`],
+    /// [`Error::NothingToFloat`], [`Error::UnsupportedShape`], [`Error::Mesh`] (a trimesh that
+    /// is not closed and consistently oriented).
+    pub fn register(
+        &mut self,
+        body: RigidBodyHandle,
+        bodies: &RigidBodySet,
+        colliders: &ColliderSet,
+        options: FloatOptions,
+    ) -> Result<(), Error> {
+        let rigid_body = bodies.get(body).ok_or(Error::UnknownBody(body))?;
+        let selected: Vec<ColliderHandle> = match &options.colliders {
+            FloatingColliders::All => rigid_body.colliders().to_vec(),
+            FloatingColliders::Only(list) => list.clone(),
+        };
+        let mut parts = Vec::new();
+        for handle in selected {
+            let collider = colliders.get(handle).ok_or(Error::UnknownCollider(handle))?;
+            let shape_to_body = match (collider.parent(), collider.position_wrt_parent()) {
+                (Some(parent), Some(pose)) if parent == body => pose_to_nalgebra(pose),
+                _ => return Err(Error::NotAttached { collider: handle, body }),
+            };
+            append_meshes(handle, collider.shape(), shape_to_body, options.subdivisions, &mut parts)?;
+        }
+        if parts.is_empty() {
+            return Err(Error::NothingToFloat(body));
+        }
+        if let Some(&i) = self.index.get(&body) {
+            self.bodies[i].parts = parts;
+            self.bodies[i].options = options;
+        } else {
+            self.index.insert(body, self.bodies.len());
+            self.bodies.push(FloatingBody {
+                handle: body,
+                parts,
+                options,
+                applied_force: Vector::ZERO,
+                applied_torque: Vector::ZERO,
+                report: FloatReport::default(),
+                pending: None,
+            });
+        }
+        Ok(())
+    }
+
+    /// Stops `body` from floating and takes back the force and torque the adapter added to it.
+    /// Returns whether it was registered.
+    pub fn unregister(&mut self, body: RigidBodyHandle, bodies: &mut RigidBodySet) -> bool {
+        let Some(i) = self.index.remove(&body) else { return false };
+        let removed = self.bodies.swap_remove(i);
+        if let Some(moved) = self.bodies.get(i) {
+            self.index.insert(moved.handle, i);
+        }
+        if let Some(rb) = bodies.get_mut(body) {
+            rb.add_force(-removed.applied_force, false);
+            rb.add_torque(-removed.applied_torque, false);
+        }
+        true
+    }
+
+    /// Tells the adapter that the application reset the forces and torques of `body`
+    /// (`RigidBody::reset_forces` / `reset_torques`), so that its own share is zero now.
+    pub fn forget_applied(&mut self, body: RigidBodyHandle) {
+        if let Some(&i) = self.index.get(&body) {
+            self.bodies[i].applied_force = Vector::ZERO;
+            self.bodies[i].applied_torque = Vector::ZERO;
+        }
+    }
+
+    /// The last report of `body`: what was computed and applied at the last
+    /// [`apply`](Self::apply).
+    pub fn report(&self, body: RigidBodyHandle) -> Option<&FloatReport> {
+        self.index.get(&body).map(|&i| &self.bodies[i].report)
+    }
+
+    /// The meshes a body floats with (one per shape, in the shape's frame) and their
+    /// shape → body poses.
+    pub fn meshes(&self, body: RigidBodyHandle) -> impl Iterator<Item = (&Mesh<f64>, &Pose<f64>)> {
+        self.index
+            .get(&body)
+            .into_iter()
+            .flat_map(move |&i| self.bodies[i].parts.iter().map(|p| (&p.mesh, &p.shape_to_body)))
+    }
+
+    /// Computes buoyancy and damping for every registered body at its current pose and
+    /// velocity, and sets the body's share of the applied force and torque to it (see the
+    /// [crate documentation](crate) on forces the application adds itself). Call it once per
+    /// step, before `PhysicsPipeline::step`, with the step's `dt` (s), which only bounds the
+    /// damping impulse. Bodies removed from `bodies` are forgotten; fixed and kinematic bodies
+    /// get nothing. With the `rayon` feature the bodies are computed in parallel.
+    ///
+    /// No allocation once every body has been seen (the meshes are prepared at registration).
+    pub fn apply(&mut self, bodies: &mut RigidBodySet, dt: f32) {
+        // Forget removed bodies.
+        if self.bodies.iter().any(|b| !bodies.contains(b.handle)) {
+            self.bodies.retain(|b| bodies.contains(b.handle));
+            self.index = self.bodies.iter().enumerate().map(|(i, b)| (b.handle, i)).collect();
+        }
+        let world = (&self.water, self.method, &self.damping);
+        let shared: &RigidBodySet = bodies;
+        let compute = |b: &mut FloatingBody| {
+            let rb = &shared[b.handle];
+            let (report, wrench) = evaluate(b, rb, world, f64::from(dt));
+            b.report = report;
+            b.pending = Some(wrench);
+        };
+        #[cfg(feature = "rayon")]
+        {
+            use rayon::prelude::*;
+            self.bodies.par_iter_mut().for_each(compute);
+        }
+        #[cfg(not(feature = "rayon"))]
+        self.bodies.iter_mut().for_each(compute);
+
+        for b in &mut self.bodies {
+            let Some((force, torque)) = b.pending.take() else { continue };
+            let rb = &mut bodies[b.handle];
+            let (delta_force, delta_torque) = (force - b.applied_force, torque - b.applied_torque);
+            if delta_force == Vector::ZERO && delta_torque == Vector::ZERO {
+                continue;
+            }
+            // Wake a sleeping body only for a change that matters (say the water moved).
+            let scale = force.length() + rb.mass() * 9.81 * 1e-3 + f32::MIN_POSITIVE;
+            let wake = delta_force.length() > 1e-3 * scale || delta_torque.length() > 1e-3 * (torque.length() + scale);
+            rb.add_force(delta_force, wake);
+            rb.add_torque(delta_torque, wake);
+            b.applied_force = force;
+            b.applied_torque = torque;
+        }
+    }
+}
+
+/// Buoyancy + damping of one body: its report and the force and torque to apply (rapier types,
+/// torque about the world center of mass). Zero for non-dynamic bodies and anything non-finite.
+fn evaluate(
+    b: &FloatingBody,
+    rb: &RigidBody,
+    (world_water, world_method, world_damping): (&Water<f64>, Method, &DampingCoefficients<f64>),
+    dt: f64,
+) -> (FloatReport, (Vector, Vector)) {
+    let center_of_mass = point_to_nalgebra(rb.center_of_mass());
+    let zero = (Vector::ZERO, Vector::ZERO);
+    let skipped = FloatReport { center_of_mass, center_of_buoyancy: center_of_mass, skipped: true, ..Default::default() };
+    if !rb.is_dynamic() || !rb.is_enabled() {
+        return (FloatReport { skipped: false, ..skipped }, zero);
+    }
+    let water = b.options.water.as_ref().unwrap_or(world_water);
+    let method = b.options.method.unwrap_or(world_method);
+    let damping = b.options.damping.as_ref().unwrap_or(world_damping);
+    let body_pose = pose_to_nalgebra(rb.position());
+    let velocity = vector_to_nalgebra(rb.linvel());
+    let omega = vector_to_nalgebra(rb.angvel());
+
+    let mut report = FloatReport { center_of_mass, ..Default::default() };
+    let mut weighted_center = Vector3::zeros();
+    for part in &b.parts {
+        let pose = body_pose * part.shape_to_body;
+        let Ok(buoyancy) = part.mesh.buoyancy(&pose, water, method) else { return (skipped, zero) };
+        // The core takes the velocity of the mesh's own centroid.
+        let centroid_velocity = velocity + omega.cross(&(buoyancy.torque_point - center_of_mass));
+        let Ok(drag) = part.mesh.damping(&pose, &centroid_velocity, &omega, water, damping) else {
+            return (skipped, zero);
+        };
+        report.submerged_volume += buoyancy.submerged_volume;
+        weighted_center += buoyancy.center_of_buoyancy.coords * buoyancy.submerged_volume;
+        report.buoyancy_force += buoyancy.force;
+        report.buoyancy_torque += buoyancy.torque_about(&center_of_mass);
+        report.damping_force += drag.force;
+        report.damping_torque += drag.torque_about(&center_of_mass);
+        report.wetted_area += drag.wetted_area;
+    }
+    report.center_of_buoyancy = if report.submerged_volume.abs() > 0.0 {
+        Point3::from(weighted_center / report.submerged_volume)
+    } else {
+        water.project(&center_of_mass)
+    };
+
+    // Stability clamp of the explicit damping (see the crate documentation).
+    let mass = f64::from(rb.mass());
+    let relative_speed = (velocity - damping.current).norm();
+    let impulse = report.damping_force.norm() * dt;
+    if mass > 0.0 && impulse > mass * relative_speed {
+        report.damping_force *= mass * relative_speed / impulse;
+    }
+    let inverse_inertia = &rb.mass_properties().effective_world_inv_inertia;
+    let spin_change = vector_to_nalgebra(inverse_inertia.mul_vec(vector_to_rapier(&report.damping_torque))).norm() * dt;
+    let spin = omega.norm();
+    if spin_change > spin {
+        report.damping_torque *= spin / spin_change;
+    }
+
+    let force = report.buoyancy_force + report.damping_force;
+    let torque = report.buoyancy_torque + report.damping_torque;
+    let (force, torque) = (vector_to_rapier(&force), vector_to_rapier(&torque));
+    if !(force.is_finite() && torque.is_finite() && report.center_of_buoyancy.iter().all(|c| c.is_finite())) {
+        return (skipped, zero);
+    }
+    (report, (force, torque))
+}

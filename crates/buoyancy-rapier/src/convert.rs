@@ -1,0 +1,31 @@
+//! glam (rapier's types) ↔ nalgebra (the core's types), at the boundary only.
+//!
+//! rapier computes in `f32`; the adapter computes buoyancy and damping in `f64` and rounds the
+//! results back to `f32`.
+
+use buoyancy_core::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
+use rapier3d::math::{Pose, Vector};
+
+/// A rapier vector as an `f64` nalgebra vector.
+pub(crate) fn vector_to_nalgebra(v: Vector) -> Vector3<f64> {
+    Vector3::<f32>::from(v).cast::<f64>()
+}
+
+/// A rapier point (a glam vector) as an `f64` nalgebra point.
+pub(crate) fn point_to_nalgebra(v: Vector) -> Point3<f64> {
+    Point3::from(vector_to_nalgebra(v))
+}
+
+/// An `f64` nalgebra vector as a rapier vector (rounded to `f32`).
+pub(crate) fn vector_to_rapier(v: &Vector3<f64>) -> Vector {
+    Vector::from(v.cast::<f32>())
+}
+
+/// A rapier pose as an `f64` nalgebra isometry (the quaternion renormalised in `f64`).
+pub(crate) fn pose_to_nalgebra(pose: &Pose) -> Isometry3<f64> {
+    let rotation = UnitQuaternion::<f32>::from(pose.rotation).into_inner().cast::<f64>();
+    Isometry3::from_parts(
+        Translation3::from(vector_to_nalgebra(pose.translation)),
+        UnitQuaternion::new_normalize(rotation),
+    )
+}

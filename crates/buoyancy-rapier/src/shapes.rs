@@ -1,0 +1,97 @@
+//! Collider shapes to closed triangle meshes, once, at registration.
+
+use buoyancy_core::nalgebra::Point3;
+use buoyancy_core::{Mesh, Pose};
+use rapier3d::parry::shape::{Shape, TypedShape};
+use rapier3d::prelude::ColliderHandle;
+
+use crate::convert::{pose_to_nalgebra, vector_to_nalgebra};
+use crate::Error;
+
+/// A closed mesh of one (sub-)shape of a collider, with its place on the body.
+#[derive(Debug, Clone)]
+pub(crate) struct FloatingPart {
+    /// The mesh, in the shape's frame.
+    pub mesh: Mesh<f64>,
+    /// Shape frame → body frame.
+    pub shape_to_body: Pose<f64>,
+}
+
+/// Appends the meshes of `shape` (placed on the body by `shape_to_body`) to `parts`.
+///
+/// Trimeshes are used as they are; cuboids and convex polyhedra exactly; balls, cylinders,
+/// capsules and cones with `subdivisions` segments around (and half as many from pole to pole);
+/// compounds part by part.
+pub(crate) fn append_meshes(
+    collider: ColliderHandle,
+    shape: &dyn Shape,
+    shape_to_body: Pose<f64>,
+    subdivisions: u32,
+    parts: &mut Vec<FloatingPart>,
+) -> Result<(), Error> {
+    let around = subdivisions.max(3);
+    // Pole to pole; even so that a capsule's two hemispheres have whole rings.
+    let pole_to_pole = (subdivisions / 2).max(2).next_multiple_of(2);
+    let (vertices, triangles, weld) = match shape.as_typed_shape() {
+        TypedShape::TriMesh(m) => (m.vertices().to_vec(), m.indices().to_vec(), false),
+        TypedShape::Cuboid(c) => with_weld(c.to_trimesh()),
+        TypedShape::Ball(b) => with_weld(b.to_trimesh(around, pole_to_pole)),
+        TypedShape::Cylinder(c) => with_weld(c.to_trimesh(around)),
+        TypedShape::Capsule(c) => with_weld(c.to_trimesh(around, pole_to_pole)),
+        TypedShape::Cone(c) => with_weld(c.to_trimesh(around)),
+        TypedShape::ConvexPolyhedron(c) => with_weld(c.to_trimesh()),
+        TypedShape::Compound(c) => {
+            for (pose, sub) in c.shapes() {
+                append_meshes(collider, sub.as_ref(), shape_to_body * pose_to_nalgebra(pose), subdivisions, parts)?;
+            }
+            return Ok(());
+        }
+        _ => {
+            return Err(Error::UnsupportedShape {
+                collider,
+                shape: format!("{:?}", shape.shape_type()),
+            });
+        }
+    };
+    let mut points: Vec<Point3<f64>> = vertices.iter().map(|v| Point3::from(vector_to_nalgebra(*v))).collect();
+    let mut triangles = triangles;
+    if weld {
+        weld_vertices(&mut points, &mut triangles);
+    }
+    let mesh = Mesh::new(points, triangles).map_err(|source| Error::Mesh { collider, source })?;
+    parts.push(FloatingPart { mesh, shape_to_body });
+    Ok(())
+}
+
+fn with_weld<V>((v, t): (Vec<V>, Vec<[u32; 3]>)) -> (Vec<V>, Vec<[u32; 3]>, bool) {
+    (v, t, true)
+}
+
+/// Merges vertices closer than 1e-6 of the mesh's extent (parry's generated meshes repeat the
+/// seam and pole vertices) and drops the triangles that collapse.
+fn weld_vertices(points: &mut Vec<Point3<f64>>, triangles: &mut Vec<[u32; 3]>) {
+    if points.is_empty() {
+        return;
+    }
+    let (lo, hi) = points.iter().fold((points[0], points[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
+    let tolerance = 1e-6 * (hi - lo).norm().max(f64::MIN_POSITIVE);
+    let mut order: Vec<usize> = (0..points.len()).collect();
+    order.sort_by(|&a, &b| points[a].x.total_cmp(&points[b].x));
+    let mut representative: Vec<u32> = (0..points.len() as u32).collect();
+    for (k, &i) in order.iter().enumerate() {
+        for &j in order[..k].iter().rev() {
+            if points[i].x - points[j].x > tolerance {
+                break;
+            }
+            if (points[i] - points[j]).norm() <= tolerance {
+                representative[i] = representative[j];
+                break;
+            }
+        }
+    }
+    for t in triangles.iter_mut() {
+        *t = t.map(|i| representative[i as usize]);
+    }
+    triangles.retain(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0]);
+}
+
