@@ -17,7 +17,7 @@ use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyType;
+use pyo3::types::{PyTuple, PyType};
 use rayon::prelude::*;
 
 use convert::{arg_error, floats, shape_str};
@@ -505,11 +505,18 @@ impl PyMesh {
 ///
 /// ``Water`` is immutable, safe to share between threads, and pickles.
 #[pyclass(frozen, eq, module = "buoyancy", name = "Water")]
-#[derive(PartialEq)]
 pub struct PyWater {
     inner: buoyancy_core::Water<f64>,
     /// The normal as given, for pickling bit for bit.
     given_normal: [f64; 3],
+}
+
+/// Two waters are equal when they are the same physical water (normals compared after
+/// normalisation).
+impl PartialEq for PyWater {
+    fn eq(&self, other: &Self) -> bool {
+        self.inner == other.inner
+    }
 }
 
 #[pymethods]
@@ -678,7 +685,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(uv_sphere, m)?)?;
     m.add_function(wrap_pyfunction!(torus, m)?)?;
     m.add_function(wrap_pyfunction!(torus_knot, m)?)?;
-    m.add("METHODS", Method::ALL.map(Method::name))?;
+    m.add("METHODS", PyTuple::new(py, Method::ALL.map(Method::name))?)?;
     m.add("QUATERNION_TOLERANCE", convert::QUATERNION_TOLERANCE)?;
     m.add("MATRIX_TOLERANCE", convert::MATRIX_TOLERANCE)?;
     Ok(())
