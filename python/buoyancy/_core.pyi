@@ -6,9 +6,25 @@ from typing import Final, Literal, Protocol, TypeAlias, final
 import numpy as np
 import numpy.typing as npt
 
-MethodName: TypeAlias = Literal["fast", "improved", "exact", "fast_surface", "exact_surface"]
-FloatArray: TypeAlias = npt.NDArray[np.float64]
-IntArray: TypeAlias = npt.NDArray[np.int64]
+_MethodName: TypeAlias = Literal["fast", "improved", "exact", "fast_surface", "exact_surface"]
+_FloatArray: TypeAlias = npt.NDArray[np.float64]
+_IntArray: TypeAlias = npt.NDArray[np.int64]
+
+__all__ = [
+    "Mesh",
+    "Water",
+    "Buoyancy",
+    "BuoyancyBatch",
+    "MeshError",
+    "load",
+    "cube",
+    "uv_sphere",
+    "torus",
+    "torus_knot",
+    "METHODS",
+    "QUATERNION_TOLERANCE",
+    "MATRIX_TOLERANCE",
+]
 
 METHODS: Final[tuple[str, str, str, str, str]]
 QUATERNION_TOLERANCE: Final[float]
@@ -27,13 +43,13 @@ class _HasVerticesAndFaces(Protocol):
 class Water:
     """A body of still water with a flat surface ``dot(normal, p) == level``, SI units."""
 
-    def __init__(
-        self,
+    def __new__(
+        cls,
         density: float = 1000.0,
         gravity: float = 9.81,
         level: float = 0.0,
         normal: npt.ArrayLike | None = (0.0, 1.0, 0.0),
-    ) -> None: ...
+    ) -> Water: ...
     @property
     def density(self) -> float: ...
     @property
@@ -41,12 +57,12 @@ class Water:
     @property
     def level(self) -> float: ...
     @property
-    def normal(self) -> FloatArray:
+    def normal(self) -> _FloatArray:
         """Unit up normal, shape (3,)."""
     @property
     def specific_weight(self) -> float:
         """``density * gravity``, N/m³."""
-    def __eq__(self, other: object) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> tuple[type[Water], tuple[float, float, float, tuple[float, float, float]]]: ...
 
 @final
@@ -56,16 +72,16 @@ class Buoyancy:
     @property
     def volume(self) -> float: ...
     @property
-    def center(self) -> FloatArray:
+    def center(self) -> _FloatArray:
         """Center of buoyancy, shape (3,)."""
     @property
-    def force(self) -> FloatArray:
+    def force(self) -> _FloatArray:
         """Buoyant force, N, shape (3,)."""
     @property
-    def torque(self) -> FloatArray:
+    def torque(self) -> _FloatArray:
         """Torque about ``about``, N·m, shape (3,)."""
     @property
-    def about(self) -> FloatArray:
+    def about(self) -> _FloatArray:
         """The torque's reference point, shape (3,)."""
     @property
     def fully_submerged(self) -> int: ...
@@ -79,40 +95,40 @@ class BuoyancyBatch:
     """The buoyancy at K poses: arrays indexed by pose."""
 
     @property
-    def volume(self) -> FloatArray:
+    def volume(self) -> _FloatArray:
         """Shape (K,)."""
     @property
-    def center(self) -> FloatArray:
+    def center(self) -> _FloatArray:
         """Shape (K, 3)."""
     @property
-    def force(self) -> FloatArray:
+    def force(self) -> _FloatArray:
         """Shape (K, 3)."""
     @property
-    def torque(self) -> FloatArray:
+    def torque(self) -> _FloatArray:
         """Shape (K, 3)."""
     @property
-    def about(self) -> FloatArray:
+    def about(self) -> _FloatArray:
         """Shape (K, 3)."""
     @property
-    def fully_submerged(self) -> IntArray: ...
+    def fully_submerged(self) -> _IntArray: ...
     @property
-    def partially_submerged(self) -> IntArray: ...
+    def partially_submerged(self) -> _IntArray: ...
     @property
     def method(self) -> str: ...
     def __len__(self) -> int: ...
-    def __getitem__(self, index: int) -> Buoyancy: ...
+    def __getitem__(self, index: int, /) -> Buoyancy: ...
 
 @final
 class Mesh:
     """A closed triangle mesh, validated and prepared for buoyancy queries."""
 
-    def __init__(self, vertices: npt.ArrayLike, faces: npt.ArrayLike) -> None: ...
+    def __new__(cls, vertices: npt.ArrayLike, faces: npt.ArrayLike) -> Mesh: ...
     @classmethod
     def from_trimesh(cls, obj: _HasVerticesAndFaces) -> Mesh: ...
     @property
     def volume(self) -> float: ...
     @property
-    def centroid(self) -> FloatArray:
+    def centroid(self) -> _FloatArray:
         """Shape (3,), mesh frame."""
     @property
     def n_vertices(self) -> int: ...
@@ -123,17 +139,17 @@ class Mesh:
     @property
     def was_reoriented(self) -> bool: ...
     @property
-    def vertices(self) -> FloatArray:
+    def vertices(self) -> _FloatArray:
         """Shape (N, 3), as given."""
     @property
-    def faces(self) -> IntArray:
+    def faces(self) -> _IntArray:
         """Shape (M, 3), wound outward."""
     def buoyancy(
         self,
         position: npt.ArrayLike | None = (0, 0, 0),
         rotation: npt.ArrayLike | None = None,
         water: Water | None = None,
-        method: MethodName | str = "exact",
+        method: _MethodName | str = "exact",
         about: npt.ArrayLike | None = None,
     ) -> Buoyancy: ...
     def buoyancy_batch(
@@ -141,11 +157,11 @@ class Mesh:
         positions: npt.ArrayLike,
         rotations: npt.ArrayLike | None,
         water: Water | None = None,
-        method: MethodName | str = "exact",
+        method: _MethodName | str = "exact",
         about: npt.ArrayLike | None = None,
         threads: int | None = None,
     ) -> BuoyancyBatch: ...
-    def __reduce__(self) -> tuple[type[Mesh], tuple[FloatArray, IntArray]]: ...
+    def __reduce__(self) -> tuple[type[Mesh], tuple[_FloatArray, _IntArray]]: ...
 
 def load(path: str | os.PathLike[str]) -> Mesh: ...
 def cube(n: int = 1) -> Mesh: ...
