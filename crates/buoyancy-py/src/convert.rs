@@ -46,7 +46,11 @@ pub fn shape_str(shape: &[usize]) -> String {
         [n] => format!("({n},)"),
         _ => format!(
             "({})",
-            shape.iter().map(|n| n.to_string()).collect::<Vec<_>>().join(", ")
+            shape
+                .iter()
+                .map(|n| n.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
         ),
     }
 }
@@ -94,7 +98,10 @@ pub fn vector3(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vector3<f64>> {
             if a.shape != [3] {
                 return Err(arg_error(
                     name,
-                    format!("expected 3 numbers (shape (3,)), got shape {}", shape_str(&a.shape)),
+                    format!(
+                        "expected 3 numbers (shape (3,)), got shape {}",
+                        shape_str(&a.shape)
+                    ),
                 ));
             }
             [a.values[0], a.values[1], a.values[2]]
@@ -150,7 +157,10 @@ pub fn matrix(m: &[f64], name: &str) -> PyResult<UnitQuaternion<f64>> {
     if worst > MATRIX_TOLERANCE {
         return Err(arg_error(
             name,
-            format!("the 3×3 matrix is not a rotation: RᵀR differs from the identity by {}", crate::result::g(worst)),
+            format!(
+                "the 3×3 matrix is not a rotation: RᵀR differs from the identity by {}",
+                crate::result::g(worst)
+            ),
         ));
     }
     if m.determinant() <= 0.0 {
@@ -159,7 +169,9 @@ pub fn matrix(m: &[f64], name: &str) -> PyResult<UnitQuaternion<f64>> {
             "the 3×3 matrix is a reflection (determinant −1), not a rotation",
         ));
     }
-    Ok(UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(m)))
+    Ok(UnitQuaternion::from_rotation_matrix(
+        &Rotation3::from_matrix_unchecked(m),
+    ))
 }
 
 /// Rows of a (K, 3) array-like, finite.
@@ -171,10 +183,20 @@ pub fn rows3(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<Vector3<f64>>> 
             format!("expected shape (K, 3), got shape {}", shape_str(&a.shape)),
         ));
     }
-    if let Some(k) = a.values.chunks_exact(3).position(|r| !r.iter().all(|x| x.is_finite())) {
-        return Err(arg_error(&format!("{name}[{k}]"), "has a NaN or infinite component"));
+    if let Some(k) = a
+        .values
+        .chunks_exact(3)
+        .position(|r| !r.iter().all(|x| x.is_finite()))
+    {
+        return Err(arg_error(
+            &format!("{name}[{k}]"),
+            "has a NaN or infinite component",
+        ));
     }
-    Ok(a.values.chunks_exact(3).map(Vector3::from_column_slice).collect())
+    Ok(a.values
+        .chunks_exact(3)
+        .map(Vector3::from_column_slice)
+        .collect())
 }
 
 /// Rotations from a (K, 4) array of quaternions `(x, y, z, w)` or a (K, 3, 3) array of matrices.

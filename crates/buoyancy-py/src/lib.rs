@@ -21,7 +21,7 @@ use pyo3::types::{PyTuple, PyType};
 use rayon::prelude::*;
 
 use convert::{arg_error, floats, shape_str};
-use result::{g, g3, PyBuoyancy, PyBuoyancyBatch, Row};
+use result::{PyBuoyancy, PyBuoyancyBatch, Row, g, g3};
 
 create_exception!(
     buoyancy,
@@ -60,21 +60,33 @@ fn parse_method(method: &str) -> PyResult<Method> {
     method.parse().map_err(|e| to_py(e, Some("method")))
 }
 
-/// Converts a shape's `(vertices, triangles)` into the mesh arguments' Rust form.
+/// Vertices and triangles, as `buoyancy_core::Mesh::new` takes them.
 type Shape = (Vec<Point3<f64>>, Vec<[u32; 3]>);
+
+/// What `__reduce__` returns: the class and the arguments that rebuild the object.
+type Reduced<'py, A> = (Bound<'py, PyType>, A);
+/// `Mesh(vertices, faces)`'s arguments.
+type MeshArgs<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<i64>>);
+/// `Water(density, gravity, level, normal)`'s arguments.
+type WaterArgs = (f64, f64, f64, (f64, f64, f64));
+
+/// Shape (n, 3), or an empty array (left to the core to report as an empty mesh).
+fn rows_of_three(shape: &[usize], len: usize) -> bool {
+    (shape.len() == 2 && shape[1] == 3) || (len == 0 && shape.len() <= 2)
+}
 
 /// Vertices (N, 3) and faces (M, 3) from any array-likes.
 fn mesh_arrays(vertices: &Bound<'_, PyAny>, faces: &Bound<'_, PyAny>) -> PyResult<Shape> {
     let mesh_err = |e: PyErr| MeshError::new_err(e.value(vertices.py()).to_string());
     let v = floats(vertices, "vertices").map_err(mesh_err)?;
-    if !(v.shape.len() == 2 && v.shape[1] == 3) && !(v.values.is_empty() && v.shape.len() <= 2) {
+    if !rows_of_three(&v.shape, v.values.len()) {
         return Err(MeshError::new_err(format!(
             "vertices: expected shape (N, 3), got shape {}",
             shape_str(&v.shape)
         )));
     }
     let f = floats(faces, "faces").map_err(mesh_err)?;
-    if !(f.shape.len() == 2 && f.shape[1] == 3) && !(f.values.is_empty() && f.shape.len() <= 2) {
+    if !rows_of_three(&f.shape, f.values.len()) {
         return Err(MeshError::new_err(format!(
             "faces: expected shape (M, 3) of vertex indices, got shape {}",
             shape_str(&f.shape)
@@ -141,7 +153,10 @@ impl PyMesh {
         let inner = py
             .detach(move || buoyancy_core::Mesh::new(vertices, triangles))
             .map_err(|e| to_py(e, None))?;
-        Ok(PyMesh { inner, vertices: kept })
+        Ok(PyMesh {
+            inner,
+            vertices: kept,
+        })
     }
 
     fn pose(
@@ -189,7 +204,11 @@ fn pool(threads: usize) -> PyResult<Arc<rayon::ThreadPool>> {
 impl PyMesh {
     #[new]
     #[pyo3(text_signature = "(vertices, faces)")]
-    fn new(py: Python<'_>, vertices: &Bound<'_, PyAny>, faces: &Bound<'_, PyAny>) -> PyResult<Self> {
+    fn new(
+        py: Python<'_>,
+        vertices: &Bound<'_, PyAny>,
+        faces: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
         let shape = mesh_arrays(vertices, faces)?;
         PyMesh::build(py, shape)
     }
@@ -200,7 +219,10 @@ impl PyMesh {
     /// >>> buoyancy.Mesh.from_trimesh(trimesh.creation.box())  # doctest: +SKIP
     /// Mesh(n_vertices=8, n_triangles=12, volume=1, centroid=[0, 0, 0])
     #[classmethod]
-    fn from_trimesh<'py>(cls: &Bound<'py, PyType>, obj: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    fn from_trimesh<'py>(
+        cls: &Bound<'py, PyType>,
+        obj: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
         let vertices = obj.getattr("vertices")?;
         let faces = obj.getattr("faces")?;
         cls.call1((vertices, faces))
@@ -391,9 +413,9 @@ impl PyMesh {
                 convert::finite(&f.values, "about")?;
                 match f.shape.as_slice() {
                     [3] => About::Point(Point3::from_slice(&f.values)),
-                    [n, 3] if *n == k => About::PerPose(
-                        f.values.chunks_exact(3).map(Point3::from_slice).collect(),
-                    ),
+                    [n, 3] if *n == k => {
+                        About::PerPose(f.values.chunks_exact(3).map(Point3::from_slice).collect())
+                    }
                     _ => {
                         return Err(arg_error(
                             "about",
@@ -457,12 +479,13 @@ impl PyMesh {
 
     /// Pickles as the vertices and faces as given: unpickling validates again and gives a
     /// mesh with bit-identical results.
-    fn __reduce__<'py>(
-        slf: &Bound<'py, Self>,
-    ) -> PyResult<(Bound<'py, PyType>, (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<i64>>))> {
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Reduced<'py, MeshArgs<'py>>> {
         let py = slf.py();
         let this = slf.get();
-        Ok((slf.get_type(), (this.vertices(py), this.faces_array(py, true))))
+        Ok((
+            slf.get_type(),
+            (this.vertices(py), this.faces_array(py, true)),
+        ))
     }
 }
 
@@ -526,13 +549,22 @@ impl PyWater {
         signature = (density=1000.0, gravity=9.81, level=0.0, normal=None),
         text_signature = "(density=1000.0, gravity=9.81, level=0.0, normal=(0.0, 1.0, 0.0))"
     )]
-    fn new(density: f64, gravity: f64, level: f64, normal: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
+    fn new(
+        density: f64,
+        gravity: f64,
+        level: f64,
+        normal: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
         let n = match normal {
             Some(n) if !n.is_none() => convert::vector3(n, "normal")?,
             _ => Vector3::y(),
         };
-        let inner = buoyancy_core::Water::new(density, gravity, n, level).map_err(|e| to_py(e, None))?;
-        Ok(PyWater { inner, given_normal: n.into() })
+        let inner =
+            buoyancy_core::Water::new(density, gravity, n, level).map_err(|e| to_py(e, None))?;
+        Ok(PyWater {
+            inner,
+            given_normal: n.into(),
+        })
     }
 
     /// Density, kg/m³.
@@ -574,12 +606,17 @@ impl PyWater {
         )
     }
 
-    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, (f64, f64, f64, (f64, f64, f64))) {
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> Reduced<'py, WaterArgs> {
         let w = slf.get();
         let [x, y, z] = w.given_normal;
         (
             slf.get_type(),
-            (w.inner.density(), w.inner.gravity(), w.inner.level(), (x, y, z)),
+            (
+                w.inner.density(),
+                w.inner.gravity(),
+                w.inner.level(),
+                (x, y, z),
+            ),
         )
     }
 }
@@ -604,7 +641,10 @@ fn load(py: Python<'_>, path: PathBuf) -> PyResult<PyMesh> {
 
 fn at_least(value: usize, min: usize, name: &str) -> PyResult<()> {
     if value < min {
-        Err(arg_error(name, format!("must be at least {min}, got {value}")))
+        Err(arg_error(
+            name,
+            format!("must be at least {min}, got {value}"),
+        ))
     } else {
         Ok(())
     }
@@ -614,7 +654,10 @@ fn positive(value: f64, name: &str) -> PyResult<()> {
     if value.is_finite() && value > 0.0 {
         Ok(())
     } else {
-        Err(arg_error(name, format!("must be finite and positive, got {value}")))
+        Err(arg_error(
+            name,
+            format!("must be finite and positive, got {value}"),
+        ))
     }
 }
 
@@ -639,7 +682,13 @@ fn uv_sphere(py: Python<'_>, radius: f64, slices: usize, stacks: usize) -> PyRes
 /// A torus about the y axis (2·segments·sides triangles).
 #[pyfunction]
 #[pyo3(signature = (major=1.0, minor=0.25, segments=48, sides=16))]
-fn torus(py: Python<'_>, major: f64, minor: f64, segments: usize, sides: usize) -> PyResult<PyMesh> {
+fn torus(
+    py: Python<'_>,
+    major: f64,
+    minor: f64,
+    segments: usize,
+    sides: usize,
+) -> PyResult<PyMesh> {
     positive(major, "major")?;
     positive(minor, "minor")?;
     if minor >= major {
@@ -647,7 +696,10 @@ fn torus(py: Python<'_>, major: f64, minor: f64, segments: usize, sides: usize) 
     }
     at_least(segments, 3, "segments")?;
     at_least(sides, 3, "sides")?;
-    PyMesh::build(py, buoyancy_core::shape::torus(major, minor, segments, sides))
+    PyMesh::build(
+        py,
+        buoyancy_core::shape::torus(major, minor, segments, sides),
+    )
 }
 
 /// A (p, q) torus knot swept by a tube (2·segments·sides triangles).

@@ -173,10 +173,14 @@ impl PyBuoyancyBatch {
                 .unbind()
         };
         let counts = |f: fn(&Row) -> usize| -> Py<PyArray1<i64>> {
-            Array1::from_iter(rows.iter().map(|r| f(r) as i64)).into_pyarray(py).unbind()
+            Array1::from_iter(rows.iter().map(|r| f(r) as i64))
+                .into_pyarray(py)
+                .unbind()
         };
         PyBuoyancyBatch {
-            volume: Array1::from_iter(rows.iter().map(|r| r.volume)).into_pyarray(py).unbind(),
+            volume: Array1::from_iter(rows.iter().map(|r| r.volume))
+                .into_pyarray(py)
+                .unbind(),
             center: column3(|r| r.center),
             force: column3(|r| r.force),
             torque: column3(|r| r.torque),
@@ -247,7 +251,9 @@ impl PyBuoyancyBatch {
         let v = volume.as_array();
         let (lo, hi) = v
             .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| (lo.min(x), hi.max(x)));
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
+                (lo.min(x), hi.max(x))
+            });
         if v.is_empty() {
             format!("BuoyancyBatch(0 poses, method='{}')", self.method)
         } else {
