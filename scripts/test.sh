@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs every test of the project: unit, integration, property and doc tests of all crates,
-# with and without the optional features.
+# with and without the optional features; then builds the Python wheel into a fresh virtual
+# environment (.venv-test/) with `pip install .` and runs its pytest suite (tests/python).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo test --workspace --all-features
@@ -9,3 +10,14 @@ cargo test -p buoyancy-rapier
 cargo test -p buoyancy-core --no-default-features --lib
 # Builds the examples and the benchmarks (never runs them).
 cargo build --workspace --all-targets --all-features
+
+echo "== Python: pip install . into a fresh .venv-test, then pytest"
+PYTHON="${PYTHON:-python3}"
+rm -rf .venv-test
+"$PYTHON" -m venv .venv-test
+VPY=.venv-test/bin/python
+"$VPY" -m pip install --quiet --upgrade pip
+"$VPY" -m pip install --quiet numpy pytest matplotlib
+"$VPY" -m pip install --quiet .
+# From the tests folder's parent, so that `import buoyancy` is the installed wheel.
+"$VPY" -m pytest tests/python -q -p no:cacheprovider

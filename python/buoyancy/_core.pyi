@@ -1,0 +1,177 @@
+"""Type stubs of the compiled module ``buoyancy._core`` (re-exported by ``buoyancy``)."""
+
+import os
+from typing import Final, Literal, Protocol, TypeAlias, final
+
+import numpy as np
+import numpy.typing as npt
+
+_MethodName: TypeAlias = Literal["fast", "improved", "exact", "fast_surface", "exact_surface"]
+_FloatArray: TypeAlias = npt.NDArray[np.float64]
+_IntArray: TypeAlias = npt.NDArray[np.int64]
+
+__all__ = [
+    "Mesh",
+    "Water",
+    "Buoyancy",
+    "BuoyancyBatch",
+    "MeshError",
+    "load",
+    "cube",
+    "uv_sphere",
+    "torus",
+    "torus_knot",
+    "METHODS",
+    "QUATERNION_TOLERANCE",
+    "MATRIX_TOLERANCE",
+]
+
+METHODS: Final[tuple[str, str, str, str, str]]
+QUATERNION_TOLERANCE: Final[float]
+MATRIX_TOLERANCE: Final[float]
+
+class MeshError(ValueError):
+    """A mesh that cannot be used; the message names the vertex, triangle or edge at fault."""
+
+class _HasVerticesAndFaces(Protocol):
+    @property
+    def vertices(self) -> npt.ArrayLike: ...
+    @property
+    def faces(self) -> npt.ArrayLike: ...
+
+@final
+class Water:
+    """A body of still water with a flat surface ``dot(normal, p) == level``, SI units."""
+
+    def __new__(
+        cls,
+        density: float = 1000.0,
+        gravity: float = 9.81,
+        level: float = 0.0,
+        normal: npt.ArrayLike | None = (0.0, 1.0, 0.0),
+    ) -> Water: ...
+    @property
+    def density(self) -> float: ...
+    @property
+    def gravity(self) -> float: ...
+    @property
+    def level(self) -> float: ...
+    @property
+    def normal(self) -> _FloatArray:
+        """Unit up normal, shape (3,)."""
+    @property
+    def specific_weight(self) -> float:
+        """``density * gravity``, N/m³."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> tuple[type[Water], tuple[float, float, float, tuple[float, float, float]]]: ...
+
+@final
+class Buoyancy:
+    """The buoyancy at one pose, world frame."""
+
+    @property
+    def volume(self) -> float: ...
+    @property
+    def center(self) -> _FloatArray:
+        """Center of buoyancy, shape (3,)."""
+    @property
+    def force(self) -> _FloatArray:
+        """Buoyant force, N, shape (3,)."""
+    @property
+    def torque(self) -> _FloatArray:
+        """Torque about ``about``, N·m, shape (3,)."""
+    @property
+    def about(self) -> _FloatArray:
+        """The torque's reference point, shape (3,)."""
+    @property
+    def fully_submerged(self) -> int: ...
+    @property
+    def partially_submerged(self) -> int: ...
+    @property
+    def method(self) -> str: ...
+
+@final
+class BuoyancyBatch:
+    """The buoyancy at K poses: arrays indexed by pose."""
+
+    @property
+    def volume(self) -> _FloatArray:
+        """Shape (K,)."""
+    @property
+    def center(self) -> _FloatArray:
+        """Shape (K, 3)."""
+    @property
+    def force(self) -> _FloatArray:
+        """Shape (K, 3)."""
+    @property
+    def torque(self) -> _FloatArray:
+        """Shape (K, 3)."""
+    @property
+    def about(self) -> _FloatArray:
+        """Shape (K, 3)."""
+    @property
+    def fully_submerged(self) -> _IntArray: ...
+    @property
+    def partially_submerged(self) -> _IntArray: ...
+    @property
+    def method(self) -> str: ...
+    def __len__(self) -> int: ...
+    def __getitem__(self, index: int, /) -> Buoyancy: ...
+
+@final
+class Mesh:
+    """A closed triangle mesh, validated and prepared for buoyancy queries."""
+
+    def __new__(cls, vertices: npt.ArrayLike, faces: npt.ArrayLike) -> Mesh: ...
+    @classmethod
+    def from_trimesh(cls, obj: _HasVerticesAndFaces) -> Mesh: ...
+    @property
+    def volume(self) -> float: ...
+    @property
+    def centroid(self) -> _FloatArray:
+        """Shape (3,), mesh frame."""
+    @property
+    def n_vertices(self) -> int: ...
+    @property
+    def n_triangles(self) -> int: ...
+    @property
+    def bounding_radius(self) -> float: ...
+    @property
+    def was_reoriented(self) -> bool: ...
+    @property
+    def vertices(self) -> _FloatArray:
+        """Shape (N, 3), as given."""
+    @property
+    def faces(self) -> _IntArray:
+        """Shape (M, 3), wound outward."""
+    def buoyancy(
+        self,
+        position: npt.ArrayLike | None = (0, 0, 0),
+        rotation: npt.ArrayLike | None = None,
+        water: Water | None = None,
+        method: _MethodName | str = "exact",
+        about: npt.ArrayLike | None = None,
+    ) -> Buoyancy: ...
+    def buoyancy_batch(
+        self,
+        positions: npt.ArrayLike,
+        rotations: npt.ArrayLike | None,
+        water: Water | None = None,
+        method: _MethodName | str = "exact",
+        about: npt.ArrayLike | None = None,
+        threads: int | None = None,
+    ) -> BuoyancyBatch: ...
+    def __reduce__(self) -> tuple[type[Mesh], tuple[_FloatArray, _IntArray]]: ...
+
+def load(path: str | os.PathLike[str]) -> Mesh: ...
+def cube(n: int = 1) -> Mesh: ...
+def uv_sphere(radius: float = 1.0, slices: int = 32, stacks: int = 16) -> Mesh: ...
+def torus(major: float = 1.0, minor: float = 0.25, segments: int = 48, sides: int = 16) -> Mesh: ...
+def torus_knot(
+    p: int = 2,
+    q: int = 3,
+    radius: float = 1.0,
+    tube_radius: float = 0.2,
+    segments: int = 80,
+    sides: int = 11,
+) -> Mesh: ...

@@ -1,0 +1,239 @@
+"""Construction from any array-like, properties, files, trimesh, pickling, reprs, docstrings."""
+
+from __future__ import annotations
+
+import doctest
+import pathlib
+import pickle
+import re
+import struct
+
+import numpy as np
+import pytest
+
+import buoyancy
+from buoyancy import shapes
+from conftest import REPO, quaternion_matrix, random_quaternions
+
+TET_V = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+TET_F = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
+
+
+@pytest.mark.parametrize("vdtype", [np.float64, np.float32, np.int32, np.int64, object])
+@pytest.mark.parametrize("fdtype", [np.int64, np.int32, np.uint16, np.uint32, np.float64])
+def test_any_dtype(vdtype, fdtype) -> None:  # type: ignore[no-untyped-def]
+    mesh = buoyancy.Mesh(np.array(TET_V, dtype=vdtype), np.array(TET_F, dtype=fdtype))
+    assert mesh.volume == pytest.approx(1 / 6, rel=1e-15)
+    np.testing.assert_allclose(mesh.centroid, [0.25, 0.25, 0.25], rtol=1e-15)
+    assert (mesh.n_vertices, mesh.n_triangles) == (4, 4)
+
+
+def test_lists_tuples_and_views() -> None:
+    big = np.zeros((4, 6))
+    big[:, ::2] = TET_V  # a strided, non-contiguous view
+    for vertices in (TET_V, [list(v) for v in TET_V], tuple(TET_V), big[:, ::2]):
+        assert buoyancy.Mesh(vertices, TET_F).volume == pytest.approx(1 / 6)
+
+
+def test_properties() -> None:
+    mesh = buoyancy.Mesh(TET_V, TET_F)
+    assert mesh.vertices.dtype == np.float64 and mesh.vertices.shape == (4, 3)
+    np.testing.assert_array_equal(mesh.vertices, TET_V)
+    np.testing.assert_array_equal(mesh.faces, TET_F)
+    assert mesh.faces.dtype == np.int64
+    assert not mesh.was_reoriented
+    assert mesh.bounding_radius == pytest.approx(np.linalg.norm(np.array([1, 0, 0]) - 0.25))
+    # Returned arrays are copies: changing them does not change the mesh.
+    c = mesh.centroid
+    c[:] = 7
+    np.testing.assert_allclose(mesh.centroid, 0.25)
+
+
+def test_inward_winding_is_flipped() -> None:
+    inward = [(a, c, b) for a, b, c in TET_F]
+    mesh = buoyancy.Mesh(TET_V, inward)
+    assert mesh.was_reoriented
+    assert mesh.volume == pytest.approx(1 / 6)
+    np.testing.assert_array_equal(mesh.faces, TET_F)
+
+
+def test_reprs() -> None:
+    mesh = buoyancy.Mesh(TET_V, TET_F)
+    assert repr(mesh) == "Mesh(n_vertices=4, n_triangles=4, volume=0.166667, centroid=[0.25, 0.25, 0.25])"
+    assert repr(buoyancy.Water()) == "Water(density=1000, gravity=9.81, level=0, normal=(0, 1, 0))"
+    b = shapes.cube().buoyancy((0, -0.25, 0))
+    assert repr(b) == "Buoyancy(volume=0.75, center=[0, -0.375, 0], force=[0, 7357.5, 0], torque=[0, 0, 0], method='exact')"
+
+
+def test_water() -> None:
+    w = buoyancy.Water(density=1025.0, gravity=9.8, level=2.0, normal=[0, 0, 5])
+    assert (w.density, w.gravity, w.level, w.specific_weight) == (1025.0, 9.8, 2.0, 1025.0 * 9.8)
+    np.testing.assert_array_equal(w.normal, [0, 0, 1])
+    assert w == buoyancy.Water(1025.0, 9.8, 2.0, (0, 0, 1))
+    assert w != buoyancy.Water()
+    assert buoyancy.Water() == buoyancy.Water(1000.0, 9.81, 0.0, (0.0, 1.0, 0.0))
+    # The default water is the one used when none is given.
+    cube = shapes.cube()
+    np.testing.assert_array_equal(cube.buoyancy((0, -0.2, 0)).force, cube.buoyancy((0, -0.2, 0), water=buoyancy.Water()).force)
+
+
+def test_argument_forms_agree(rng: np.random.Generator) -> None:
+    knot = shapes.torus_knot()
+    for q in random_quaternions(rng, 5):
+        p = rng.uniform(-0.5, 0.5, size=3)
+        ref = knot.buoyancy(tuple(p), tuple(q))
+        for position, rotation in [(list(p), list(q)), (p, q), (p.astype(np.float32).astype(float), q)]:
+            b = knot.buoyancy(position, rotation)
+            if position is not None and np.array_equal(np.asarray(position, float), p):
+                np.testing.assert_array_equal(b.force, ref.force)
+        # A rotation matrix gives the same result as its quaternion, up to round-off.
+        m = knot.buoyancy(p, quaternion_matrix(q))
+        np.testing.assert_allclose(m.force, ref.force, rtol=1e-12, atol=1e-9)
+        np.testing.assert_allclose(m.torque, ref.torque, rtol=1e-9, atol=1e-8)
+        np.testing.assert_allclose(m.center, ref.center, atol=1e-12)
+        # Keywords, and a nearly unit quaternion, normalised.
+        n = knot.buoyancy(position=p, rotation=q * (1 + 5e-6), method="EXACT")
+        np.testing.assert_allclose(n.force, ref.force, rtol=1e-12)
+        assert n.method == "exact"
+
+
+def test_methods_constant() -> None:
+    assert buoyancy.METHODS == ("fast", "improved", "exact", "fast_surface", "exact_surface")
+    for m in buoyancy.METHODS:
+        assert shapes.cube().buoyancy(method=m).method == m
+
+
+def obj_text(mesh: buoyancy.Mesh) -> str:
+    lines = [f"v {float(x)!r} {float(y)!r} {float(z)!r}" for x, y, z in mesh.vertices]
+    lines += [f"f {a + 1} {b + 1} {c + 1}" for a, b, c in mesh.faces]
+    return "\n".join(lines) + "\n"
+
+
+def stl_ascii(mesh: buoyancy.Mesh) -> str:
+    out = ["solid test"]
+    for t in mesh.faces:
+        out.append("facet normal 0 0 0\nouter loop")
+        out += [f"vertex {float(x)!r} {float(y)!r} {float(z)!r}" for x, y, z in mesh.vertices[t]]
+        out.append("endloop\nendfacet")
+    return "\n".join(out + ["endsolid test"]) + "\n"
+
+
+def stl_binary(mesh: buoyancy.Mesh) -> bytes:
+    data = bytearray(b"binary".ljust(80, b" ") + struct.pack("<I", mesh.n_triangles))
+    for t in mesh.faces:
+        data += struct.pack("<3f", 0, 0, 0)
+        for v in mesh.vertices[t]:
+            data += struct.pack("<3f", *v)
+        data += b"\0\0"
+    return bytes(data)
+
+
+def test_load_obj_and_stl(tmp_path: pathlib.Path) -> None:
+    knot = shapes.torus_knot()
+    (tmp_path / "knot.obj").write_text(obj_text(knot))
+    (tmp_path / "knot.STL").write_text(stl_ascii(knot))
+    (tmp_path / "knot_bin.stl").write_bytes(stl_binary(knot))
+    obj = buoyancy.load(tmp_path / "knot.obj")
+    ascii_ = buoyancy.load(str(tmp_path / "knot.STL"))
+    binary = buoyancy.load(tmp_path / "knot_bin.stl")
+    for mesh in (obj, ascii_):
+        assert mesh.n_triangles == knot.n_triangles and mesh.n_vertices == knot.n_vertices
+        assert mesh.volume == pytest.approx(knot.volume, rel=1e-12)
+    # float32 in the binary file: the same shape to single precision.
+    assert binary.n_vertices == knot.n_vertices
+    assert binary.volume == pytest.approx(knot.volume, rel=1e-5)
+
+
+def test_shared_meshes(shared_meshes: pathlib.Path) -> None:
+    armadillo = buoyancy.load(shared_meshes / "armadillo.obj")
+    assert armadillo.was_reoriented and armadillo.volume == pytest.approx(1.902, rel=1e-3)
+    bunny = buoyancy.load(shared_meshes / "bunny.obj")
+    assert (bunny.n_vertices, bunny.n_triangles) == (2503, 5002)
+    assert bunny.volume == pytest.approx(749.38, rel=1e-4)
+
+
+class FakeTrimesh:
+    """What Mesh.from_trimesh needs from a trimesh.Trimesh: numpy vertices and faces."""
+
+    def __init__(self) -> None:
+        self.vertices = np.array(TET_V, dtype=np.float64)
+        self.faces = np.array(TET_F, dtype=np.int64)
+
+
+def test_from_trimesh() -> None:
+    mesh = buoyancy.Mesh.from_trimesh(FakeTrimesh())
+    assert isinstance(mesh, buoyancy.Mesh)
+    assert mesh.volume == pytest.approx(1 / 6)
+    try:
+        import trimesh
+    except ImportError:
+        return
+    box = buoyancy.Mesh.from_trimesh(trimesh.creation.box(extents=(1, 2, 3)))
+    assert box.volume == pytest.approx(6.0)
+
+
+def test_pickle_round_trip(rng: np.random.Generator) -> None:
+    for mesh in (shapes.torus_knot(), buoyancy.Mesh(TET_V, [(a, c, b) for a, b, c in TET_F])):
+        copy = pickle.loads(pickle.dumps(mesh))
+        assert copy.volume == mesh.volume and copy.was_reoriented == mesh.was_reoriented
+        np.testing.assert_array_equal(copy.vertices, mesh.vertices)
+        np.testing.assert_array_equal(copy.faces, mesh.faces)
+        np.testing.assert_array_equal(copy.centroid, mesh.centroid)
+        water = buoyancy.Water(1025.0, 9.80665, 0.1, (0.1, 0.9, 0.05))
+        water_copy = pickle.loads(pickle.dumps(water, protocol=pickle.HIGHEST_PROTOCOL))
+        assert water_copy == water
+        np.testing.assert_array_equal(water_copy.normal, water.normal)
+        positions = rng.uniform(-0.5, 0.5, size=(20, 3))
+        rotations = random_quaternions(rng, 20)
+        a = mesh.buoyancy_batch(positions, rotations, water=water)
+        b = copy.buoyancy_batch(positions, rotations, water=water_copy)
+        for field in ("volume", "center", "force", "torque"):
+            np.testing.assert_array_equal(getattr(a, field), getattr(b, field))
+
+
+def run_examples(text: str, name: str) -> int:
+    """Runs the `>>>` examples of a docstring; returns how many ran."""
+    parser = doctest.DocTestParser()
+    test = parser.get_doctest(text, {"buoyancy": buoyancy, "np": np}, name, None, 0)
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    runner.run(test)
+    result = runner.summarize(verbose=False)
+    assert result.failed == 0, f"{name}: {result.failed} doctest examples failed"
+    return result.attempted
+
+
+def test_docstring_examples() -> None:
+    objects = {
+        "buoyancy": buoyancy,
+        "buoyancy.shapes": buoyancy.shapes,
+        "Mesh": buoyancy.Mesh,
+        "Mesh.buoyancy": buoyancy.Mesh.buoyancy,
+        "Mesh.buoyancy_batch": buoyancy.Mesh.buoyancy_batch,
+        "Mesh.from_trimesh": buoyancy.Mesh.from_trimesh,
+        "Water": buoyancy.Water,
+    }
+    attempted = sum(run_examples(obj.__doc__ or "", name) for name, obj in objects.items())
+    assert attempted >= 10
+
+
+def test_readme_python_example() -> None:
+    readme = (REPO / "README.md").read_text()
+    blocks = re.findall(r"```python\n(.*?)```", readme, re.S)
+    assert blocks, "the README has a ```python example"
+    for block in blocks:
+        if ">>>" in block:
+            run_examples(block, "README")
+        else:
+            exec(compile(block, "README.md", "exec"), {})
+
+
+def test_stubs_match_the_module() -> None:
+    stub = (pathlib.Path(buoyancy.__file__).parent / "_core.pyi").read_text()
+    for name in ("Mesh", "Water", "Buoyancy", "BuoyancyBatch", "MeshError", "load", "cube", "uv_sphere", "torus", "torus_knot"):
+        assert re.search(rf"^(class|def) {name}\b", stub, re.M), name
+        assert hasattr(buoyancy._core, name)
+    for cls in (buoyancy.Mesh, buoyancy.Water, buoyancy.Buoyancy, buoyancy.BuoyancyBatch):
+        public = {n for n in dir(cls) if not n.startswith("_")}
+        for n in public:
+            assert re.search(rf"def {n}\b", stub), f"{cls.__name__}.{n} missing from the stub"
+    assert (pathlib.Path(buoyancy.__file__).parent / "py.typed").exists()

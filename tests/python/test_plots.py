@@ -1,0 +1,52 @@
+"""`python -m buoyancy.plots accuracy`: the paper's Figure 4 as PNG files."""
+
+from __future__ import annotations
+
+import pathlib
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from buoyancy import METHODS, plots
+
+pytest.importorskip("matplotlib", reason="the plots need matplotlib (pip install 'buoyancy[plot]')")
+
+PNG = b"\x89PNG\r\n\x1a\n"
+
+
+def test_accuracy_data_follows_the_curves() -> None:
+    for body in plots.bodies(small=True):
+        h, analytic, forces = plots.accuracy_data(body, samples=31)
+        assert h.shape == analytic.shape == (31,)
+        assert set(forces) == set(METHODS)
+        assert -body.half_range < h.min() and h.max() < body.half_range
+        tolerance = 1e-12 if body.name.startswith("cube") else 2e-2
+        for method in ("exact", "exact_surface"):
+            assert np.max(np.abs(forces[method] - analytic)) < tolerance
+        assert np.max(np.abs(forces["fast"] - analytic)) > 10 * tolerance
+
+
+def test_accuracy_command_writes_pngs(tmp_path: pathlib.Path) -> None:
+    out = tmp_path / "figures"
+    run = subprocess.run(
+        [sys.executable, "-m", "buoyancy.plots", "accuracy", "--out", str(out), "--small", "--samples", "15"],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert run.returncode == 0, run.stderr
+    names = sorted(p.name for p in out.iterdir())
+    assert names == ["accuracy_cube_1200.png", "accuracy_sphere_4900.png", "figure4.png"]
+    for name in names:
+        data = (out / name).read_bytes()
+        assert data.startswith(PNG) and len(data) > 10_000
+    assert "Exact Surface" in run.stdout
+
+
+def test_bad_arguments() -> None:
+    with pytest.raises(SystemExit):
+        plots.main(["accuracy", "--samples", "1"])
+    with pytest.raises(SystemExit):
+        plots.main(["nonsense"])
