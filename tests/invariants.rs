@@ -8,7 +8,7 @@
 mod common;
 
 use buoyancy::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy::{shape, Buoyancy, Mesh, Method, Pose, Water};
+use buoyancy::{shape, Buoyancy, Mesh, Method, Pose, Traversal, Water};
 use common::{all_meshes, assert_close, assert_close_v, pose, pose_at_height, reference};
 use proptest::prelude::*;
 use proptest::sample::Index;
@@ -269,6 +269,47 @@ proptest! {
     }
 }
 
+/// The hierarchy walk gives the scan's result to round-off (1e-10 relative), for every mesh,
+/// random poses and water, from fully under to fully above the surface.
+fn check_strategies(name: &str, mesh: &Mesh<f64>, pose: &Pose<f64>, water: &Water<f64>) {
+    let s = scales(mesh, water);
+    for method in Method::ALL {
+        let scan = mesh.buoyancy_with(pose, water, method, Traversal::Scan).unwrap();
+        let walk = mesh.buoyancy_with(pose, water, method, Traversal::Hierarchy).unwrap();
+        assert_same(&format!("{name}, {method}, hierarchy vs scan"), &walk, &scan, &s, 1e-10);
+        assert_eq!((walk.fully_submerged, walk.partially_submerged), (scan.fully_submerged, scan.partially_submerged), "{name}, {method}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(128))]
+
+    #[test]
+    fn hierarchy_equals_scan(
+        which in any::<Index>(),
+        water in water_strategy(),
+        height in height_strategy(),
+        offset in uniform3(-2.0, 2.0),
+        u in unit3(),
+    ) {
+        let meshes = all_meshes();
+        let (name, mesh) = which.get(&meshes);
+        let pose = pose_at_height(mesh, &water, height, Vector3::from(offset), u);
+        check_strategies(name, mesh, &pose, &water);
+    }
+
+    /// Axis-aligned bodies with whole rows of vertices in the surface.
+    #[test]
+    fn hierarchy_equals_scan_with_vertices_on_the_surface(row in 0..=8usize, yaw_quarter in 0..4u32) {
+        let (v, t) = shape::cube::<f64>(8);
+        let mesh = Mesh::new(v, t).unwrap();
+        let h = 0.5 - row as f64 / 8.0;
+        let rotation = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), std::f64::consts::FRAC_PI_2 * yaw_quarter as f64);
+        let pose = Pose::from_parts(Translation3::new(0.0, h, 0.0), rotation);
+        check_strategies("cube 8", &mesh, &pose, &Water::default());
+    }
+}
+
 /// Vertex rows lying exactly in the surface: the exact methods stay on the analytic curve.
 #[test]
 fn vertices_exactly_on_the_surface() {
@@ -297,7 +338,7 @@ fn parallel_equals_serial() {
     for (i, h) in [-1.2, -0.6, 0.0, 0.37, 0.9].into_iter().enumerate() {
         let p = pose(Vector3::new(0.1, h, 0.2), [0.1 * i as f64, 0.3, 0.7]);
         for method in Method::ALL {
-            let serial = mesh.buoyancy(&p, &water, method).unwrap();
+            let serial = mesh.buoyancy_with(&p, &water, method, Traversal::Scan).unwrap();
             for _ in 0..3 {
                 assert_eq!(mesh.par_buoyancy(&p, &water, method).unwrap(), serial, "{method}, h = {h}");
             }

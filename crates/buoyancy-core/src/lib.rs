@@ -44,6 +44,7 @@ extern crate std;
 
 pub mod damping;
 mod error;
+mod hierarchy;
 mod integrals;
 pub mod io;
 mod mesh;
@@ -57,7 +58,7 @@ pub use damping::{Damping, DampingCoefficients};
 pub use error::Error;
 pub use mesh::Mesh;
 pub use method::Method;
-pub use query::Buoyancy;
+pub use query::{Buoyancy, Traversal};
 pub use real::Real;
 pub use water::Water;
 

@@ -2,6 +2,7 @@ use alloc::vec::Vec;
 
 use nalgebra::{Point3, Vector3};
 
+use crate::hierarchy::Hierarchy;
 use crate::{Error, Real};
 
 /// A closed, consistently oriented triangle mesh, validated and prepared for buoyancy queries.
@@ -61,6 +62,8 @@ pub struct Mesh<T: Real> {
     pub(crate) bounding_radius: T,
     /// Total surface area, m².
     pub(crate) surface_area: T,
+    /// The triangles' volume elements summed over a bounding-volume hierarchy.
+    pub(crate) hierarchy: Hierarchy<T>,
     reoriented: bool,
 }
 
@@ -130,8 +133,8 @@ impl<T: Real> Mesh<T> {
         let centroid = middle + moment / volume;
 
         let relative: Vec<Vector3<f64>> = points.iter().map(|p| p - centroid).collect();
-        let mut tetra_volume6 = Vec::with_capacity(triangles.len());
-        let mut tetra_moment24 = Vec::with_capacity(triangles.len());
+        let mut volume6 = Vec::with_capacity(triangles.len());
+        let mut moment24 = Vec::with_capacity(triangles.len());
         let mut volume_scale = 0.0;
         let mut surface_area = 0.0;
         for t in &triangles {
@@ -139,18 +142,21 @@ impl<T: Real> Mesh<T> {
             surface_area += (b - a).cross(&(c - a)).norm() / 2.0;
             let det = a.dot(&b.cross(&c));
             volume_scale += det.abs() / 6.0;
-            tetra_volume6.push(T::lit(det));
-            tetra_moment24.push(((a + b + c) * det).map(T::lit));
+            volume6.push(det);
+            moment24.push((a + b + c) * det);
         }
         let bounding_radius = relative.iter().map(|v| v.norm()).fold(0.0, f64::max);
+        let vertices: Vec<Vector3<T>> = relative.iter().map(|v| v.map(T::lit)).collect();
+        let hierarchy = Hierarchy::build(&vertices, &triangles, &volume6, &moment24);
         Ok(Mesh {
-            vertices: relative.iter().map(|v| v.map(T::lit)).collect(),
+            vertices,
+            tetra_volume6: volume6.into_iter().map(T::lit).collect(),
+            tetra_moment24: moment24.into_iter().map(|m| m.map(T::lit)).collect(),
+            hierarchy,
             triangles,
             centroid: Point3::from(centroid.map(T::lit)),
             volume: T::lit(volume),
             volume_scale: T::lit(volume_scale),
-            tetra_volume6,
-            tetra_moment24,
             bounding_radius: T::lit(bounding_radius),
             surface_area: T::lit(surface_area),
             reoriented,
@@ -185,6 +191,11 @@ impl<T: Real> Mesh<T> {
     /// The triangles, oriented outward (flipped from the input if [`Mesh::was_reoriented`]).
     pub fn triangles(&self) -> &[[u32; 3]] {
         &self.triangles
+    }
+
+    /// Bytes of memory taken by the bounding-volume hierarchy of [`Traversal::Hierarchy`](crate::Traversal::Hierarchy).
+    pub fn hierarchy_bytes(&self) -> usize {
+        self.hierarchy.memory()
     }
 
     /// Whether the input was wound inward (negative signed volume) and every triangle flipped.

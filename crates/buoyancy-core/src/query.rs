@@ -30,6 +30,7 @@
 
 use nalgebra::{Matrix3, Point3, UnitQuaternion, Vector3};
 
+use crate::hierarchy::Visit;
 use crate::integrals::{clip_below, Counts, Sums, SurfaceSums, VolumeSums};
 use crate::{Error, Mesh, Method, Pose, Real, Water};
 
@@ -91,6 +92,54 @@ impl<T: Real> Buoyancy<T> {
             && self.center_of_buoyancy.iter().all(|c| c.is_finite())
             && self.force.iter().all(|c| c.is_finite())
             && self.torque.iter().all(|c| c.is_finite())
+    }
+}
+
+/// How an evaluation visits the triangles. Every traversal gives the same result up to the
+/// order of summation.
+///
+/// * `Scan` examines every triangle once: cost proportional to the mesh.
+/// * `Hierarchy` walks the mesh's bounding-volume hierarchy and opens only the nodes the water
+///   surface crosses, adding the precomputed sums of the nodes entirely under water: cost
+///   proportional to the waterline (the triangles the surface cuts) times the depth of the
+///   hierarchy, independent of the mesh size when the waterline is not. It serves the volume
+///   methods (`Fast`, `Improved`, `Exact`); the surface methods always scan.
+/// * `Auto` (the default) takes the hierarchy for the volume methods on meshes of at least
+///   [`Traversal::CROSSOVER`] triangles, and the scan otherwise.
+///
+/// [`Mesh::par_buoyancy`] always scans, in parallel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Traversal {
+    /// The hierarchy where it is faster, the scan elsewhere.
+    #[default]
+    Auto,
+    /// Every triangle, once.
+    Scan,
+    /// Only the nodes of the hierarchy the surface crosses (volume methods).
+    Hierarchy,
+}
+
+impl Traversal {
+    /// The mesh size, in triangles, from which `Auto` walks the hierarchy (measured: see
+    /// `benches/RESULTS.md`).
+    pub const CROSSOVER: usize = 64;
+}
+
+/// Sums a volume method accumulates: `VolumeSums`, or a pair whose first member takes the
+/// hierarchy's stored sums.
+trait VolumeLike<T: Real>: Sums {
+    fn exact_mut(&mut self) -> &mut VolumeSums<T>;
+}
+
+impl<T: Real> VolumeLike<T> for VolumeSums<T> {
+    fn exact_mut(&mut self) -> &mut VolumeSums<T> {
+        self
+    }
+}
+
+impl<T: Real> VolumeLike<T> for [VolumeSums<T>; 2] {
+    fn exact_mut(&mut self) -> &mut VolumeSums<T> {
+        &mut self[0]
     }
 }
 
@@ -168,7 +217,7 @@ impl<T: Real> Mesh<T> {
         water: &Water<T>,
         method: Method,
     ) -> Result<Buoyancy<T>, Error> {
-        self.evaluate(pose, water, method, false)
+        self.evaluate(pose, water, method, Traversal::Auto, false)
     }
 
     /// [`Mesh::buoyancy`], with the triangles split in fixed chunks across rayon's thread pool.
@@ -180,7 +229,19 @@ impl<T: Real> Mesh<T> {
         water: &Water<T>,
         method: Method,
     ) -> Result<Buoyancy<T>, Error> {
-        self.evaluate(pose, water, method, true)
+        self.evaluate(pose, water, method, Traversal::Scan, true)
+    }
+
+    /// [`Mesh::buoyancy`] with the traversal chosen explicitly; see [`Traversal`]. Every
+    /// traversal gives the same result up to the order of summation (round-off).
+    pub fn buoyancy_with(
+        &self,
+        pose: &Pose<T>,
+        water: &Water<T>,
+        method: Method,
+        traversal: Traversal,
+    ) -> Result<Buoyancy<T>, Error> {
+        self.evaluate(pose, water, method, traversal, false)
     }
 
     fn evaluate(
@@ -188,23 +249,21 @@ impl<T: Real> Mesh<T> {
         pose: &Pose<T>,
         water: &Water<T>,
         method: Method,
+        traversal: Traversal,
         parallel: bool,
     ) -> Result<Buoyancy<T>, Error> {
         let frame = Frame::new(self, pose, water)?;
         let n = frame.normal_local;
+        let hierarchy = !parallel
+            && match traversal {
+                Traversal::Auto => self.triangles.len() >= Traversal::CROSSOVER,
+                Traversal::Scan => false,
+                Traversal::Hierarchy => true,
+            };
         let result = match method {
             Method::Fast => {
-                let sums = reduce(self.triangles.len(), parallel, &|s: &mut VolumeSums<T>, i| {
-                    let v = self.corners(i);
-                    match classify(&frame.heights(&v)) {
-                        Side::Below => {
-                            s.volume6 += self.tetra_volume6[i];
-                            s.moment24 += self.tetra_moment24[i];
-                            s.counts.full += 1;
-                        }
-                        Side::Crossing => s.counts.partial += 1,
-                        Side::Above => {}
-                    }
+                let sums = self.volume_sums(&frame, hierarchy, parallel, |s: &mut VolumeSums<T>, i| {
+                    self.fast_triangle(&frame, s, i)
                 });
                 // Moments about the centroid.
                 self.volume_result(&frame, water, sums, Vector3::zeros())
@@ -217,42 +276,9 @@ impl<T: Real> Mesh<T> {
                 // waterline segments. Only the waterline costs more than `Fast`.
                 let apex = n * -frame.height;
                 let improved = method == Method::Improved;
-                let sums = reduce(self.triangles.len(), parallel, &|s: &mut [VolumeSums<T>; 2], i| {
-                    let [exact, clipped] = s;
-                    let v = self.corners(i);
-                    let h = frame.heights(&v);
-                    match classify(&h) {
-                        Side::Below => {
-                            exact.volume6 += self.tetra_volume6[i];
-                            exact.moment24 += self.tetra_moment24[i];
-                            exact.counts.full += 1;
-                            // An edge lying in the surface bounds the cap too, unless the
-                            // neighbour across it is submerged and cancels it.
-                            let zero = T::zero();
-                            if h[0] == zero || h[1] == zero || h[2] == zero {
-                                for k in 0..3 {
-                                    let j = (k + 1) % 3;
-                                    if h[k] == zero && h[j] == zero {
-                                        exact.add_tetrahedron([apex, v[j], v[k]]);
-                                    }
-                                }
-                            }
-                        }
-                        Side::Crossing => {
-                            exact.counts.partial += 1;
-                            let [from, to] = clip_below(v, h, |p, _| {
-                                exact.add_tetrahedron(p);
-                                if improved {
-                                    // Improved leaves these out; remember them about `apex`.
-                                    clipped.add_tetrahedron([p[0] - apex, p[1] - apex, p[2] - apex]);
-                                }
-                            });
-                            exact.add_tetrahedron([apex, from, to]);
-                        }
-                        Side::Above => {}
-                    }
+                let [exact, clipped] = self.volume_sums(&frame, hierarchy, parallel, |s: &mut [VolumeSums<T>; 2], i| {
+                    self.exact_triangle(&frame, &apex, improved, s, i)
                 });
-                let [exact, clipped] = sums;
                 if improved {
                     // Improved = tetrahedra from `apex` over the fully submerged triangles
                     // = the exact volume about `apex` minus the clipped parts about `apex`.
@@ -300,6 +326,96 @@ impl<T: Real> Mesh<T> {
     pub(crate) fn corners(&self, i: usize) -> [Vector3<T>; 3] {
         let [a, b, c] = self.triangles[i];
         [self.vertices[a as usize], self.vertices[b as usize], self.vertices[c as usize]]
+    }
+
+    /// Sums `triangle` over the triangles: over all of them (the scan, in parallel chunks when
+    /// `parallel`), or over the leaves of the hierarchy the surface crosses, adding the stored
+    /// sums of the nodes entirely under water.
+    fn volume_sums<S: VolumeLike<T>>(
+        &self,
+        frame: &Frame<T>,
+        hierarchy: bool,
+        parallel: bool,
+        triangle: impl Fn(&mut S, usize) + Sync,
+    ) -> S {
+        if !hierarchy {
+            return reduce(self.triangles.len(), parallel, &triangle);
+        }
+        let mut sums = S::zero();
+        self.hierarchy.walk(&frame.normal_local, frame.height, |visit| match visit {
+            Visit::Submerged(node) => {
+                let s = sums.exact_mut();
+                s.volume6 += node.volume6;
+                s.moment24 += node.moment24;
+                s.counts.full += node.count as usize;
+            }
+            Visit::Triangles(triangles) => {
+                for &i in triangles {
+                    triangle(&mut sums, i as usize);
+                }
+            }
+        });
+        sums
+    }
+
+    /// `Fast`'s contribution of triangle `i`: its precomputed tetrahedron to the centroid if it
+    /// is fully under water.
+    #[inline(always)]
+    fn fast_triangle(&self, frame: &Frame<T>, s: &mut VolumeSums<T>, i: usize) {
+        match classify(&frame.heights(&self.corners(i))) {
+            Side::Below => {
+                s.volume6 += self.tetra_volume6[i];
+                s.moment24 += self.tetra_moment24[i];
+                s.counts.full += 1;
+            }
+            Side::Crossing => s.counts.partial += 1,
+            Side::Above => {}
+        }
+    }
+
+    /// `Exact`'s contribution of triangle `i`, about the centroid, in `sums[0]`; with
+    /// `improved`, its clipped part about `apex` in `sums[1]` too.
+    #[inline(always)]
+    fn exact_triangle(
+        &self,
+        frame: &Frame<T>,
+        apex: &Vector3<T>,
+        improved: bool,
+        [exact, clipped]: &mut [VolumeSums<T>; 2],
+        i: usize,
+    ) {
+        let v = self.corners(i);
+        let h = frame.heights(&v);
+        match classify(&h) {
+            Side::Below => {
+                exact.volume6 += self.tetra_volume6[i];
+                exact.moment24 += self.tetra_moment24[i];
+                exact.counts.full += 1;
+                // An edge lying in the surface bounds the cap too, unless the neighbour across
+                // it is submerged and cancels it.
+                let zero = T::zero();
+                if h[0] == zero || h[1] == zero || h[2] == zero {
+                    for k in 0..3 {
+                        let j = (k + 1) % 3;
+                        if h[k] == zero && h[j] == zero {
+                            exact.add_tetrahedron([*apex, v[j], v[k]]);
+                        }
+                    }
+                }
+            }
+            Side::Crossing => {
+                exact.counts.partial += 1;
+                let [from, to] = clip_below(v, h, |p, _| {
+                    exact.add_tetrahedron(p);
+                    if improved {
+                        // Improved leaves these out; remember them about `apex`.
+                        clipped.add_tetrahedron([p[0] - apex, p[1] - apex, p[2] - apex]);
+                    }
+                });
+                exact.add_tetrahedron([*apex, from, to]);
+            }
+            Side::Above => {}
+        }
     }
 
     /// Below this |volume|, the center of buoyancy is round-off and is replaced by the surface point.
