@@ -4,8 +4,7 @@
 //! # What a node stores
 //! For the triangles `i` under a node, in the mesh frame relative to the mesh centroid `c`:
 //!
-//! * the axis-aligned box `[lo, hi]` of their vertices (exactly the stored vertex values, so
-//!   the box holds them without rounding);
+//! * the axis-aligned box of their vertices, as center `m` and half extents `e`;
 //! * `Σ detᵢ` and `Σ detᵢ·(aᵢ + bᵢ + cᵢ)`, `detᵢ = aᵢ·(bᵢ×cᵢ)`: six times the volume and
 //!   twenty-four times the first moment about `c` of the tetrahedra from `c` to the triangles,
 //!   the sums the `Fast` method adds over the fully submerged triangles.
@@ -15,7 +14,7 @@
 //!
 //! # Query
 //! With `n` the up normal and `h_c` the centroid's height (both in the mesh frame), the heights
-//! of the points of a node's box lie in `[Σₖ min(nₖloₖ, nₖhiₖ), Σₖ max(nₖloₖ, nₖhiₖ)] + h_c`. A node
+//! of the points of a node's box lie in `n·m + h_c ± |n|·e` (`|n|` taken component-wise). A node
 //! whose interval lies below zero by more than the round-off margin has every triangle fully
 //! submerged, with no vertex in the surface, and contributes its stored sums; one above zero
 //! contributes nothing; any other is opened, down to the leaves, whose triangles go through the
@@ -30,38 +29,43 @@ use nalgebra::Vector3;
 use crate::Real;
 
 /// Most triangles in a leaf.
-const LEAF_SIZE: usize = 8;
+const LEAF_SIZE: usize = 4;
 
 /// A node of the hierarchy (see the module documentation).
 #[derive(Debug, Clone)]
 pub(crate) struct Node<T: Real> {
-    pub lo: Vector3<T>,
-    pub hi: Vector3<T>,
+    /// Center and half extents of the box of the node's vertices.
+    pub center: Vector3<T>,
+    pub half: Vector3<T>,
+    /// `Σₖ |centerₖ| + halfₖ`: the size of the numbers in the node test, for its round-off margin.
+    pub magnitude: T,
     pub volume6: T,
     pub moment24: Vector3<T>,
     /// Number of triangles under the node.
     pub count: u32,
-    /// Leaf: the first slot in `order` of its triangles. Inner node: the index of its right
+    /// Leaf: the position of its first triangle in leaf order. Inner node: the index of its right
     /// child (the left child follows the node directly).
     pub link: u32,
     pub leaf: bool,
 }
 
-/// The hierarchy: nodes in depth-first order, root first, and the triangle of each leaf slot.
+/// The hierarchy: nodes in depth-first order, root first. The triangles are numbered in leaf
+/// order (see [`Hierarchy::build`]), so a leaf's triangles are a range.
 #[derive(Debug, Clone)]
 pub(crate) struct Hierarchy<T: Real> {
     pub nodes: Vec<Node<T>>,
-    pub order: Vec<u32>,
 }
 
 /// What the walk found: a node entirely under water, or a leaf's triangles to examine one by one.
 pub(crate) enum Visit<'a, T: Real> {
     Submerged(&'a Node<T>),
-    Triangles(&'a [u32]),
+    Triangles(core::ops::Range<usize>),
 }
 
 impl<T: Real> Hierarchy<T> {
-    /// Builds the hierarchy by median splits along the longest axis of the triangle centroids.
+    /// Builds the hierarchy by median splits along the longest axis of the triangle centroids,
+    /// and returns it with the leaf order: the triangles (indices into `triangles`) listed leaf
+    /// by leaf. The hierarchy numbers triangles by their position in that order.
     ///
     /// `vertices` are the stored vertices (relative to the centroid); `volume6` and `moment24`
     /// the per-triangle sums, in `f64`.
@@ -70,7 +74,7 @@ impl<T: Real> Hierarchy<T> {
         triangles: &[[u32; 3]],
         volume6: &[f64],
         moment24: &[Vector3<f64>],
-    ) -> Self {
+    ) -> (Self, Vec<u32>) {
         let mut order: Vec<u32> = (0..triangles.len() as u32).collect();
         let centers: Vec<Vector3<f64>> = triangles
             .iter()
@@ -79,7 +83,7 @@ impl<T: Real> Hierarchy<T> {
         let mut nodes = Vec::with_capacity(2 * triangles.len() / LEAF_SIZE + 1);
         let builder = Builder { vertices, triangles, volume6, moment24, centers: &centers };
         builder.node(&mut nodes, &mut order, 0);
-        Hierarchy { nodes, order }
+        (Hierarchy { nodes }, order)
     }
 
     /// Calls `visit` for every node entirely under water and every leaf the surface may cross,
@@ -95,21 +99,17 @@ impl<T: Real> Hierarchy<T> {
             top -= 1;
             let index = stack[top];
             let node = &self.nodes[index as usize];
-            let (mut low, mut high, mut scale) = (height, height, height.abs());
-            for k in 0..3 {
-                let (a, b) = (normal[k] * node.lo[k], normal[k] * node.hi[k]);
-                low += a.min(b);
-                high += a.max(b);
-                scale += node.lo[k].abs().max(node.hi[k].abs());
-            }
-            let margin = eight_eps * scale;
+            let middle = normal.dot(&node.center) + height;
+            let radius = normal.abs().dot(&node.half);
+            let margin = eight_eps * (node.magnitude + height.abs());
+            let (low, high) = (middle - radius, middle + radius);
             if high + margin < T::zero() {
                 visit(Visit::Submerged(node));
             } else if low - margin > T::zero() {
                 // Dry.
             } else if node.leaf {
                 let first = node.link as usize;
-                visit(Visit::Triangles(&self.order[first..first + node.count as usize]));
+                visit(Visit::Triangles(first..first + node.count as usize));
             } else {
                 // Right child below the left one (the node after this), which goes first.
                 stack[top] = node.link;
@@ -121,7 +121,7 @@ impl<T: Real> Hierarchy<T> {
 
     /// Bytes of memory the hierarchy uses.
     pub fn memory(&self) -> usize {
-        self.nodes.len() * core::mem::size_of::<Node<T>>() + self.order.len() * 4
+        self.nodes.len() * core::mem::size_of::<Node<T>>()
     }
 }
 
@@ -149,9 +149,14 @@ impl<T: Real> Builder<'_, T> {
             moment24 += self.moment24[i as usize];
         }
         let index = nodes.len();
+        // Computed in f64 and widened by the round-off margin of the walk; the margin also
+        // covers rounding these to `T`.
+        let (lo, hi) = (lo.map(T::to_f64), hi.map(T::to_f64));
+        let (center, half) = ((lo + hi) / 2.0, (hi - lo) / 2.0);
         nodes.push(Node {
-            lo,
-            hi,
+            center: center.map(T::lit),
+            half: half.map(T::lit),
+            magnitude: T::lit(center.abs().sum() + half.sum()),
             volume6: T::lit(volume6),
             moment24: moment24.map(T::lit),
             count: order.len() as u32,

@@ -43,8 +43,11 @@ use crate::{Error, Real};
 pub struct Mesh<T: Real> {
     /// Vertex positions relative to `centroid`, mesh frame.
     pub(crate) vertices: Vec<Vector3<T>>,
-    /// Outward-oriented triangles (counter-clockwise seen from outside).
+    /// Outward-oriented triangles (counter-clockwise seen from outside), in the input order.
     pub(crate) triangles: Vec<[u32; 3]>,
+    /// The same triangles in the hierarchy's leaf order, so that a leaf's triangles and their
+    /// precomputed sums are contiguous. The per-triangle arrays below follow this order.
+    pub(crate) leaf_triangles: Vec<[u32; 3]>,
     /// Centroid of the enclosed volume, mesh frame.
     pub(crate) centroid: Point3<T>,
     /// Enclosed volume, m³.
@@ -147,11 +150,12 @@ impl<T: Real> Mesh<T> {
         }
         let bounding_radius = relative.iter().map(|v| v.norm()).fold(0.0, f64::max);
         let vertices: Vec<Vector3<T>> = relative.iter().map(|v| v.map(T::lit)).collect();
-        let hierarchy = Hierarchy::build(&vertices, &triangles, &volume6, &moment24);
+        let (hierarchy, order) = Hierarchy::build(&vertices, &triangles, &volume6, &moment24);
         Ok(Mesh {
             vertices,
-            tetra_volume6: volume6.into_iter().map(T::lit).collect(),
-            tetra_moment24: moment24.into_iter().map(|m| m.map(T::lit)).collect(),
+            leaf_triangles: order.iter().map(|&i| triangles[i as usize]).collect(),
+            tetra_volume6: order.iter().map(|&i| T::lit(volume6[i as usize])).collect(),
+            tetra_moment24: order.iter().map(|&i| moment24[i as usize].map(T::lit)).collect(),
             hierarchy,
             triangles,
             centroid: Point3::from(centroid.map(T::lit)),
@@ -193,9 +197,11 @@ impl<T: Real> Mesh<T> {
         &self.triangles
     }
 
-    /// Bytes of memory taken by the bounding-volume hierarchy of [`Traversal::Hierarchy`](crate::Traversal::Hierarchy).
+    /// Bytes of memory taken by the bounding-volume hierarchy of
+    /// [`Traversal::Hierarchy`](crate::Traversal::Hierarchy): its nodes and the triangles'
+    /// copy in leaf order.
     pub fn hierarchy_bytes(&self) -> usize {
-        self.hierarchy.memory()
+        self.hierarchy.memory() + self.leaf_triangles.len() * core::mem::size_of::<[u32; 3]>()
     }
 
     /// Whether the input was wound inward (negative signed volume) and every triangle flipped.

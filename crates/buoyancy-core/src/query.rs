@@ -321,10 +321,10 @@ impl<T: Real> Mesh<T> {
         }
     }
 
-    /// The corners of triangle `i`, relative to the centroid, mesh frame.
+    /// The corners of triangle `i` (in leaf order), relative to the centroid, mesh frame.
     #[inline(always)]
     pub(crate) fn corners(&self, i: usize) -> [Vector3<T>; 3] {
-        let [a, b, c] = self.triangles[i];
+        let [a, b, c] = self.leaf_triangles[i];
         [self.vertices[a as usize], self.vertices[b as usize], self.vertices[c as usize]]
     }
 
@@ -350,8 +350,8 @@ impl<T: Real> Mesh<T> {
                 s.counts.full += node.count as usize;
             }
             Visit::Triangles(triangles) => {
-                for &i in triangles {
-                    triangle(&mut sums, i as usize);
+                for i in triangles {
+                    triangle(&mut sums, i);
                 }
             }
         });
