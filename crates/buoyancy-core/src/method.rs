@@ -18,7 +18,9 @@ use crate::Error;
 /// The volume methods apply the divergence theorem: the submerged volume is a sum of signed
 /// tetrahedra `V_i(o) = (a−o)·((b−o)×(c−o))/6`. With the reference point `o` on the water plane
 /// (`Improved`, `Exact`) the cap where the plane cuts the body contributes nothing, so clipping
-/// the waterline triangles is all `Exact` needs. `Fast` uses the mesh centroid as `o`, which lets
+/// the waterline triangles is all `Exact` needs. (The implementation sums about the centroid
+/// instead and adds the cap explicitly, as a fan over the waterline, so that `Exact` reuses
+/// `Fast`'s precomputed tetrahedra; the result is the same.) `Fast` uses the mesh centroid as `o`, which lets
 /// it precompute every `V_i`, and misses the cone from the centroid to the cap: its error does
 /// not shrink when the mesh is refined.
 ///

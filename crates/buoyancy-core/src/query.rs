@@ -107,7 +107,7 @@ impl<T: Real> Buoyancy<T> {
 /// * `Auto` (the default) takes the hierarchy for the volume methods on meshes of at least
 ///   [`Traversal::CROSSOVER`] triangles, and the scan otherwise.
 ///
-/// [`Mesh::par_buoyancy`] always scans, in parallel.
+/// `Mesh::par_buoyancy` (feature `rayon`) always scans, in parallel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum Traversal {
     /// The hierarchy where it is faster, the scan elsewhere.
