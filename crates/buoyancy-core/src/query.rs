@@ -220,8 +220,14 @@ impl<T: Real> Mesh<T> {
         self.evaluate(pose, water, method, Traversal::Auto, false)
     }
 
-    /// [`Mesh::buoyancy`], with the triangles split in fixed chunks across rayon's thread pool.
-    /// The result is bit-identical to the serial one.
+    /// A scan of every triangle, split in fixed chunks across rayon's thread pool. The result is
+    /// bit-identical to the serial scan (`buoyancy_with(…, Traversal::Scan)`) and equal to
+    /// [`Mesh::buoyancy`] up to round-off.
+    ///
+    /// For the surface methods on large meshes this is the fastest way. For the volume methods
+    /// (`Fast`, `Improved`, `Exact`) the hierarchy walk of [`Mesh::buoyancy`] usually beats it
+    /// on one thread, since it only visits the waterline; parallelise across bodies or poses
+    /// instead.
     #[cfg(feature = "rayon")]
     pub fn par_buoyancy(
         &self,
