@@ -4,7 +4,7 @@
 mod common;
 
 use buoyancy::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy::{shape, Error, Mesh, Method, Pose, Water};
+use buoyancy::{shape, Error, Mesh, Method, Pose, Traversal, Water};
 use common::{meshes_dir, shared_meshes};
 
 fn load(name: &str) -> Option<(Vec<Point3<f64>>, Vec<[u32; 3]>)> {
@@ -140,6 +140,11 @@ fn f32_matches_f64() {
             assert!(rel < 1e-5, "{method}, h = {h}: {rel:e}");
             let dc = (a.center_of_buoyancy - b.center_of_buoyancy.cast::<f64>()).norm();
             assert!(dc < 1e-4, "{method}, h = {h}: center off by {dc:e}");
+            // In f32 too, the hierarchy classifies every triangle as the scan does.
+            let scan = m32.buoyancy_with(&p32, &Water::default(), method, Traversal::Scan).unwrap();
+            let walk = m32.buoyancy_with(&p32, &Water::default(), method, Traversal::Hierarchy).unwrap();
+            assert_eq!((scan.fully_submerged, scan.partially_submerged), (walk.fully_submerged, walk.partially_submerged), "{method}, h = {h}");
+            assert!((scan.submerged_volume - walk.submerged_volume).abs() < 1e-5 * m32.volume(), "{method}, h = {h}");
         }
     }
 }
