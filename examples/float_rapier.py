@@ -140,7 +140,7 @@ def main() -> None:
     print(f"rapier3d {rapier3d._rapier3d.__version__}, buoyancy {buoyancy.__version__}: "
           f"{args.seconds:g} s at 60 Hz, fresh water (1000 kg/m³)")
     print(f"{'body':<11} {'density':>8} {'volume m³':>10} {'mass kg':>9} "
-          f"{'theory':>7} {'simulated':>9} {"error":>8} {'|v| m/s':>8}")
+          f"{'theory':>7} {'simulated':>9} {'error':>8} {'|v| m/s':>8}")
     for r in results:
         print(f"{r.name:<11} {r.density:>8.0f} {r.volume:>10.5f} {r.mass:>9.3f} "
               f"{r.theory:>7.4f} {r.simulated:>9.4f} {r.error:>+8.3%} {r.residual_speed:>8.1e}")

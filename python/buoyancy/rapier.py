@@ -77,7 +77,7 @@ def _vec(v: Any) -> np.ndarray:
     return np.array((v[0], v[1], v[2]), dtype=np.float64)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class FloatReport:
     """What :meth:`FloatingBodies.apply` computed and applied for one body, world frame, SI
     units, torques about the body's world center of mass.
