@@ -143,7 +143,7 @@ def main() -> None:
           f"{'theory':>7} {'simulated':>9} {'error':>8} {'|v| m/s':>8}")
     for r in results:
         print(f"{r.name:<11} {r.density:>8.0f} {r.volume:>10.5f} {r.mass:>9.3f} "
-              f"{r.theory:>7.4f} {r.simulated:>9.4f} {r.error:>+8.3%} {r.residual_speed:>8.1e}")
+              f"{r.theory:>7.5f} {r.simulated:>9.5f} {r.error:>+8.3%} {r.residual_speed:>8.1e}")
     print("theory: submerged fraction = mass / (ρ_water · volume) = relative density")
 
 

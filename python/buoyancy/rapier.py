@@ -15,7 +15,7 @@ Example (a 1 m crate of density 500 kg/m³ floats half submerged)::
 
     world = rapier3d.PhysicsWorld(gravity=(0.0, -9.81, 0.0))
     crate = world.add_body(
-        rapier3d.RigidBody.dynamic().translation((0.0, 1.0, 0.0)),
+        rapier3d.RigidBody.dynamic().translation((0.0, 1.0, 0.0)).can_sleep(False),
         [rapier3d.Collider.cuboid(0.5, 0.5, 0.5).density(500.0)],
     )
     water = FloatingBodies.for_world(world)        # fresh water, surface y = 0, y up
@@ -23,6 +23,14 @@ Example (a 1 m crate of density 500 kg/m³ floats half submerged)::
     for _ in range(600):
         water.step(world)                          # apply(...), then world.step()
     print(world.rigid_bodies[crate].translation)   # y ≈ 0: half under water
+
+Sleeping
+    rapier puts a body to sleep once it has moved slower than its activation thresholds
+    (0.4 m/s by default) for 2 s, and a floating body bobbing gently does so before it reaches
+    equilibrium: asleep, it stays where it was (within a few mm for a 1 m body). Build floating
+    bodies with ``can_sleep(False)``, or lower their ``activation`` thresholds, when the
+    equilibrium matters. ``apply`` wakes a sleeping body only when its force changes by more
+    than 0.1% (say the water moved).
 
 Forces the application adds itself
     rapier keeps the forces and torques added to a body (``add_force``, ``add_torque``) until

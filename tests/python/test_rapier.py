@@ -206,3 +206,22 @@ def test_bookkeeping_and_errors() -> None:
         FloatingBodies(damping=buoyancy.Water())  # type: ignore[arg-type]
     with pytest.raises(ValueError, match="^gravity:"):
         FloatingBodies((0.0, float("nan"), 0.0))
+
+
+def test_module_docstring_example_runs() -> None:
+    import textwrap
+
+    import buoyancy.rapier
+
+    after = (buoyancy.rapier.__doc__ or "").split("floats half submerged)::\n", 1)[1]
+    lines = []
+    for line in after.splitlines():
+        if line and not line.startswith("    "):
+            break  # the end of the indented block
+        lines.append(line)
+    code = textwrap.dedent("\n".join(lines))
+    assert "water.step(world)" in code
+    namespace: dict[str, Any] = {}
+    exec(compile(code, "buoyancy/rapier.py", "exec"), namespace)
+    world, crate = namespace["world"], namespace["crate"]
+    assert abs(world.rigid_bodies[crate].translation.y) < 0.01
