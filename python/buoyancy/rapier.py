@@ -80,6 +80,18 @@ __all__ = ["FloatReport", "FloatingBodies"]
 _ZERO3 = np.zeros(3)
 
 
+def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``np.cross`` for two 3-vectors, without its general-case overhead."""
+    return np.array(
+        (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]),
+        dtype=np.float64,
+    )
+
+
+def _norm(v: np.ndarray) -> float:
+    return math.sqrt(float(v @ v))
+
+
 def _vec(v: Any) -> np.ndarray:
     """A rapier ``Vec3``/``Point3`` (or any 3-sequence) as a float64 array."""
     return np.array((v[0], v[1], v[2]), dtype=np.float64)
@@ -338,10 +350,9 @@ class FloatingBodies:
             if not (delta_force.any() or delta_torque.any()):
                 continue
             # Wake a sleeping body only for a change that matters (say the water moved).
-            scale = float(np.linalg.norm(force)) + float(rb.mass) * 9.81e-3 + 1e-30
+            scale = _norm(force) + float(rb.mass) * 9.81e-3 + 1e-30
             wake = bool(
-                np.linalg.norm(delta_force) > 1e-3 * scale
-                or np.linalg.norm(delta_torque) > 1e-3 * (float(np.linalg.norm(torque)) + scale)
+                _norm(delta_force) > 1e-3 * scale or _norm(delta_torque) > 1e-3 * (_norm(torque) + scale)
             )
             rb.add_force(tuple(delta_force.astype(np.float64)), wake)
             rb.add_torque(tuple(delta_torque.astype(np.float64)), wake)
@@ -361,7 +372,6 @@ class FloatingBodies:
         zero = np.zeros(3)
         if not rb.is_dynamic or not rb.is_enabled:
             return FloatReport(center_of_buoyancy=com, center_of_mass=com), zero, zero
-        skipped = FloatReport(center_of_buoyancy=com, center_of_mass=com, skipped=True)
         water = self._water if entry.water is None else entry.water
         method = self._method if entry.method is None else entry.method
         coefficients = self._damping if entry.damping is None else entry.damping
@@ -376,32 +386,32 @@ class FloatingBodies:
             d = entry.mesh.damping(
                 position,
                 rotation,
-                velocity + np.cross(omega, centroid - com),
+                velocity + _cross(omega, centroid - com),
                 omega,
                 water,
                 coefficients,
                 about=com,
             )
         except ValueError:
-            return skipped, zero, zero
-        buoyancy_torque = b.torque + np.cross(centroid - com, b.force)
+            return FloatReport(center_of_buoyancy=com, center_of_mass=com, skipped=True), zero, zero
+        buoyancy_torque = b.torque + _cross(centroid - com, b.force)
         damping_force, damping_torque = d.force, d.torque
 
         # Stability clamp of the explicit damping (see the module documentation).
         mass = float(rb.mass)
-        relative_speed = float(np.linalg.norm(velocity - coefficients.current))
-        impulse = float(np.linalg.norm(damping_force)) * dt
+        relative_speed = _norm(velocity - coefficients.current)
+        impulse = _norm(damping_force) * dt
         if mass > 0 and impulse > mass * relative_speed:
             damping_force = damping_force * (mass * relative_speed / impulse)
-        spin_change = float(np.linalg.norm(_world_inverse_inertia(rb) @ damping_torque)) * dt
-        spin = float(np.linalg.norm(omega))
+        spin = _norm(omega)
+        spin_change = _norm(_world_inverse_inertia(rb) @ damping_torque) * dt if damping_torque.any() else 0.0
         if spin_change > spin:
             damping_torque = damping_torque * (spin / spin_change)
 
         force = b.force + damping_force
         torque = buoyancy_torque + damping_torque
         if not (np.isfinite(force).all() and np.isfinite(torque).all() and np.isfinite(b.center).all()):
-            return skipped, zero, zero
+            return FloatReport(center_of_buoyancy=com, center_of_mass=com, skipped=True), zero, zero
         report = FloatReport(
             submerged_volume=b.volume,
             center_of_buoyancy=b.center,
