@@ -89,7 +89,7 @@ def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 def _norm(v: np.ndarray) -> float:
-    return math.sqrt(float(v @ v))
+    return math.hypot(float(v[0]), float(v[1]), float(v[2]))
 
 
 def _vec(v: Any) -> np.ndarray:
@@ -342,9 +342,15 @@ class FloatingBodies:
         for handle, entry in self._bodies.items():
             rb = bodies[handle]
             report, force, torque = self._evaluate(entry, rb, dt)
+            with np.errstate(over="ignore"):
+                force32 = force.astype(np.float32)
+                torque32 = torque.astype(np.float32)
+            if not (np.isfinite(force32).all() and np.isfinite(torque32).all()):
+                # Finite in float64 but beyond rapier's float32.
+                com = report.center_of_mass
+                report = FloatReport(center_of_buoyancy=com, center_of_mass=com, skipped=True)
+                force32 = torque32 = np.zeros(3, dtype=np.float32)
             entry.report = report
-            force32 = force.astype(np.float32)
-            torque32 = torque.astype(np.float32)
             delta_force = force32 - entry.applied_force
             delta_torque = torque32 - entry.applied_torque
             if not (delta_force.any() or delta_torque.any()):

@@ -228,3 +228,17 @@ def test_module_docstring_example_runs() -> None:
     exec(compile(code, "buoyancy/rapier.py", "exec"), namespace)
     world, crate = namespace["world"], namespace["crate"]
     assert abs(world.rigid_bodies[crate].translation.y) < 0.01
+
+
+def test_beyond_float32_is_skipped_not_infinite() -> None:
+    # Finite in float64, but water of 1e38 kg/m³ makes forces beyond rapier's float32.
+    world, h = world_with_cube(y=-0.2)
+    fb = FloatingBodies.for_world(world, water=buoyancy.Water(density=1e38))
+    fb.register(h, buoyancy.shapes.cube())
+    fb.apply(world.rigid_bodies, 1 / 60)
+    assert fb.report(h).skipped
+    assert vec(world.rigid_bodies[h].user_force).tolist() == [0, 0, 0]
+    # Back to normal water: the body floats again.
+    fb.water = buoyancy.Water(gravity=9.81)
+    fb.apply(world.rigid_bodies, 1 / 60)
+    assert not fb.report(h).skipped and world.rigid_bodies[h].user_force.y > 0
