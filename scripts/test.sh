@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every test of the project: unit, integration, property and doc tests of all crates,
 # with and without the optional features; then builds the Python wheel into a fresh virtual
-# environment (.venv-test/) with `pip install .` and runs its pytest suite (tests/python).
+# environment (.venv-test/) with `pip install .` (and rapier3d, for buoyancy.rapier) and runs
+# its pytest suite (tests/python).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo test --workspace --all-features
@@ -18,6 +19,10 @@ rm -rf .venv-test
 VPY=.venv-test/bin/python
 "$VPY" -m pip install --quiet --upgrade pip
 "$VPY" -m pip install --quiet numpy pytest matplotlib
+# rapier's Python binding, for buoyancy.rapier (a prebuilt abi3 wheel); without it the rapier
+# tests skip, saying so.
+"$VPY" -m pip install --quiet 'rapier3d>=0.36.1' \
+  || echo "note: rapier3d could not be installed; tests/python/test_rapier.py will skip"
 "$VPY" -m pip install --quiet .
 # From the tests folder's parent, so that `import buoyancy` is the installed wheel.
 "$VPY" -m pytest tests/python -q -p no:cacheprovider

@@ -15,6 +15,8 @@ __all__ = [
     "Water",
     "Buoyancy",
     "BuoyancyBatch",
+    "Damping",
+    "DampingCoefficients",
     "MeshError",
     "load",
     "cube",
@@ -119,6 +121,78 @@ class BuoyancyBatch:
     def __getitem__(self, index: int, /) -> Buoyancy: ...
 
 @final
+class DampingCoefficients:
+    """The coefficients of the hydrodynamic damping model, SI units."""
+
+    def __new__(
+        cls,
+        linear: float = 1000.0,
+        drag_coefficient: float = 1.0,
+        angular_linear: float = 0.1,
+        angular_quadratic: float = 0.1,
+        current: npt.ArrayLike | None = (0.0, 0.0, 0.0),
+    ) -> DampingCoefficients: ...
+    @classmethod
+    def off(cls) -> DampingCoefficients:
+        """No damping at all."""
+    @property
+    def linear(self) -> float:
+        """Linear pressure-drag coefficient, Pa per m/s."""
+    @property
+    def drag_coefficient(self) -> float:
+        """Dimensionless quadratic drag coefficient ``C_D``."""
+    @property
+    def angular_linear(self) -> float:
+        """Linear angular damping rate, 1/s."""
+    @property
+    def angular_quadratic(self) -> float:
+        """Dimensionless quadratic angular damping coefficient."""
+    @property
+    def current(self) -> _FloatArray:
+        """Velocity of the water, m/s, shape (3,)."""
+    @property
+    def is_off(self) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(
+        self,
+    ) -> tuple[type[DampingCoefficients], tuple[float, float, float, float, tuple[float, float, float]]]: ...
+
+@final
+class Damping:
+    """The hydrodynamic damping at one instant, world frame."""
+
+    def __new__(
+        cls,
+        force: npt.ArrayLike,
+        torque: npt.ArrayLike,
+        about: npt.ArrayLike,
+        wetted_area: float = 0.0,
+        wetted_fraction: float = 0.0,
+    ) -> Damping: ...
+    @property
+    def force(self) -> _FloatArray:
+        """Damping force, N, shape (3,)."""
+    @property
+    def torque(self) -> _FloatArray:
+        """Torque about ``about``, N·m, shape (3,)."""
+    @property
+    def about(self) -> _FloatArray:
+        """The torque's reference point, shape (3,)."""
+    @property
+    def wetted_area(self) -> float:
+        """Area of the surface under water, m²."""
+    @property
+    def wetted_fraction(self) -> float:
+        """Wetted area over the whole surface area, in [0, 1]."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(
+        self,
+    ) -> tuple[
+        type[Damping],
+        tuple[tuple[float, float, float], tuple[float, float, float], tuple[float, float, float], float, float],
+    ]: ...
+
+@final
 class Mesh:
     """A closed triangle mesh, validated and prepared for buoyancy queries."""
 
@@ -161,6 +235,16 @@ class Mesh:
         about: npt.ArrayLike | None = None,
         threads: int | None = None,
     ) -> BuoyancyBatch: ...
+    def damping(
+        self,
+        position: npt.ArrayLike | None = (0, 0, 0),
+        rotation: npt.ArrayLike | None = None,
+        linear_velocity: npt.ArrayLike | None = (0, 0, 0),
+        angular_velocity: npt.ArrayLike | None = (0, 0, 0),
+        water: Water | None = None,
+        coefficients: DampingCoefficients | None = None,
+        about: npt.ArrayLike | None = None,
+    ) -> Damping: ...
     def __reduce__(self) -> tuple[type[Mesh], tuple[_FloatArray, _IntArray]]: ...
 
 def load(path: str | os.PathLike[str]) -> Mesh: ...

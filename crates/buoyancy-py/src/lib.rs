@@ -5,6 +5,7 @@
 //! rayon. The Python package `buoyancy` (python/buoyancy) re-exports it.
 
 mod convert;
+mod damping;
 mod result;
 
 use std::path::PathBuf;
@@ -21,6 +22,7 @@ use pyo3::types::{PyTuple, PyType};
 use rayon::prelude::*;
 
 use convert::{arg_error, floats, shape_str};
+use damping::{PyDamping, PyDampingCoefficients};
 use result::{PyBuoyancy, PyBuoyancyBatch, Row, g, g3};
 
 create_exception!(
@@ -466,6 +468,95 @@ impl PyMesh {
         Ok(PyBuoyancyBatch::new(py, rows, method))
     }
 
+    /// The hydrodynamic damping of the mesh at one pose and velocity: pressure drag on the wetted
+    /// surface plus angular damping (see :class:`DampingCoefficients` for the model). Zero when
+    /// dry or at rest relative to the water.
+    ///
+    /// Parameters
+    /// ----------
+    /// position, rotation : array_like, optional
+    ///     The pose, as in :meth:`buoyancy`.
+    /// linear_velocity : array_like, shape (3,)
+    ///     Velocity of the body's center of mass (the mesh centroid moved by the pose), world
+    ///     frame, m/s; default zero.
+    /// angular_velocity : array_like, shape (3,)
+    ///     Angular velocity, world frame, rad/s; default zero.
+    /// water : Water, optional
+    ///     Default ``Water()``.
+    /// coefficients : DampingCoefficients, optional
+    ///     Default ``DampingCoefficients()``.
+    /// about : array_like, shape (3,), optional
+    ///     World point the torque is taken about; default the body's center of mass.
+    ///
+    /// Returns
+    /// -------
+    /// Damping
+    ///
+    /// The model is explicit: a simulation applying it over a step ``dt`` should keep the impulse
+    /// ``|force| * dt`` below the momentum it damps (``buoyancy.rapier`` clamps it so).
+    ///
+    /// Examples
+    /// --------
+    /// A unit cube under water sinking at 2 m/s: only its bottom face (1 m²) faces the flow,
+    /// and feels ``1000 * 2 + 0.5 * 1000 * 1 * 2**2 = 4000`` Pa.
+    ///
+    /// >>> cube = buoyancy.shapes.cube()
+    /// >>> d = cube.damping(position=(0, -3, 0), linear_velocity=(0, -2, 0))
+    /// >>> d.force.round(9).tolist(), d.wetted_area
+    /// ([0.0, 4000.0, 0.0], 6.0)
+    /// >>> cube.damping(position=(0, 2, 0), linear_velocity=(0, -2, 0)).force.tolist()  # dry
+    /// [0.0, 0.0, 0.0]
+    #[pyo3(
+        signature = (position=None, rotation=None, linear_velocity=None, angular_velocity=None, water=None, coefficients=None, about=None),
+        text_signature = "(self, position=(0, 0, 0), rotation=None, linear_velocity=(0, 0, 0), angular_velocity=(0, 0, 0), water=None, coefficients=None, about=None)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn damping(
+        &self,
+        py: Python<'_>,
+        position: Option<&Bound<'_, PyAny>>,
+        rotation: Option<&Bound<'_, PyAny>>,
+        linear_velocity: Option<&Bound<'_, PyAny>>,
+        angular_velocity: Option<&Bound<'_, PyAny>>,
+        water: Option<&Bound<'_, PyWater>>,
+        coefficients: Option<&Bound<'_, PyDampingCoefficients>>,
+        about: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyDamping> {
+        let pose = PyMesh::pose(position, rotation)?;
+        let velocity = |v: Option<&Bound<'_, PyAny>>, name: &str| match v {
+            Some(v) if !v.is_none() => convert::vector3(v, name),
+            _ => Ok(Vector3::zeros()),
+        };
+        let linear_velocity = velocity(linear_velocity, "linear_velocity")?;
+        let angular_velocity = velocity(angular_velocity, "angular_velocity")?;
+        let about = match about {
+            Some(a) if !a.is_none() => Some(convert::vector3(a, "about")?),
+            _ => None,
+        };
+        let water = water.map_or_else(buoyancy_core::Water::default, |w| w.get().inner);
+        let coefficients = coefficients
+            .map_or_else(buoyancy_core::DampingCoefficients::default, |c| {
+                c.get().inner
+            });
+        let mesh = &self.inner;
+        let evaluate = move || {
+            mesh.damping(
+                &pose,
+                &linear_velocity,
+                &angular_velocity,
+                &water,
+                &coefficients,
+            )
+        };
+        let d = if mesh.triangle_count() >= DETACH_TRIANGLES {
+            py.detach(evaluate)
+        } else {
+            evaluate()
+        }
+        .map_err(|e| to_py(e, None))?;
+        Ok(PyDamping::new(&d, about))
+    }
+
     fn __repr__(&self) -> String {
         let c = self.inner.centroid();
         format!(
@@ -731,6 +822,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyWater>()?;
     m.add_class::<PyBuoyancy>()?;
     m.add_class::<PyBuoyancyBatch>()?;
+    m.add_class::<PyDamping>()?;
+    m.add_class::<PyDampingCoefficients>()?;
     m.add("MeshError", py.get_type::<MeshError>())?;
     m.add_function(wrap_pyfunction!(load, m)?)?;
     m.add_function(wrap_pyfunction!(cube, m)?)?;
