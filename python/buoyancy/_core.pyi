@@ -7,6 +7,7 @@ import numpy as np
 import numpy.typing as npt
 
 _MethodName: TypeAlias = Literal["fast", "improved", "exact", "fast_surface", "exact_surface"]
+_TraversalName: TypeAlias = Literal["auto", "scan", "hierarchy"]
 _FloatArray: TypeAlias = npt.NDArray[np.float64]
 _IntArray: TypeAlias = npt.NDArray[np.int64]
 
@@ -225,6 +226,7 @@ class Mesh:
         water: Water | None = None,
         method: _MethodName | str = "exact",
         about: npt.ArrayLike | None = None,
+        traversal: _TraversalName | str = "auto",
     ) -> Buoyancy: ...
     def buoyancy_batch(
         self,
@@ -234,6 +236,7 @@ class Mesh:
         method: _MethodName | str = "exact",
         about: npt.ArrayLike | None = None,
         threads: int | None = None,
+        traversal: _TraversalName | str = "auto",
     ) -> BuoyancyBatch: ...
     def damping(
         self,

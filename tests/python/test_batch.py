@@ -122,3 +122,24 @@ def test_single_calls_from_threads_on_a_shared_mesh(rng: np.random.Generator) ->
     for t in threads:
         t.join()
     np.testing.assert_array_equal(np.array(results), np.array(expected))
+
+
+def test_traversals_agree_and_bad_names_are_named() -> None:
+    """Scan and hierarchy give the same result to round-off, single and batch."""
+    knot = buoyancy.shapes.torus_knot(segments=120, sides=12)
+    rng = np.random.default_rng(7)
+    positions = rng.uniform(-1.0, 1.0, size=(40, 3))
+    rotations = rng.normal(size=(40, 4))
+    rotations /= np.linalg.norm(rotations, axis=1, keepdims=True)
+    scale_v = knot.volume
+    for method in buoyancy.METHODS:
+        batches = {t: knot.buoyancy_batch(positions, rotations, method=method, traversal=t) for t in ("auto", "scan", "hierarchy")}
+        for t in ("auto", "hierarchy"):
+            assert np.max(np.abs(batches[t].volume - batches["scan"].volume)) <= 1e-10 * scale_v
+            assert np.max(np.abs(batches[t].force - batches["scan"].force)) <= 1e-10 * 9810 * scale_v
+        single = knot.buoyancy(positions[3], rotations[3], method=method, traversal="scan")
+        assert single.volume == batches["scan"].volume[3]
+    with pytest.raises(ValueError, match="traversal.*auto, scan, hierarchy"):
+        knot.buoyancy(traversal="bvh")
+    with pytest.raises(ValueError, match="traversal"):
+        knot.buoyancy_batch(positions, rotations, traversal="linear")

@@ -12,7 +12,7 @@ use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::{Error, Method, Pose};
+use buoyancy_core::{Error, Method, Pose, Traversal};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::create_exception;
@@ -60,6 +60,18 @@ fn to_py(e: Error, argument: Option<&str>) -> PyErr {
 
 fn parse_method(method: &str) -> PyResult<Method> {
     method.parse().map_err(|e| to_py(e, Some("method")))
+}
+
+fn parse_traversal(traversal: &str) -> PyResult<Traversal> {
+    match traversal {
+        "auto" => Ok(Traversal::Auto),
+        "scan" => Ok(Traversal::Scan),
+        "hierarchy" => Ok(Traversal::Hierarchy),
+        other => Err(arg_error(
+            "traversal",
+            format!("unknown traversal {other:?}; valid traversals are auto, scan, hierarchy"),
+        )),
+    }
 }
 
 /// Vertices and triangles, as `buoyancy_core::Mesh::new` takes them.
@@ -295,6 +307,11 @@ impl PyMesh {
     ///     Default ``Water()``: fresh water, y up, surface at y = 0.
     /// method : str
     ///     ``"fast"``, ``"improved"``, ``"exact"`` (default), ``"fast_surface"`` or ``"exact_surface"``.
+    /// traversal : str
+    ///     ``"auto"`` (default), ``"scan"`` or ``"hierarchy"``: visit every triangle, or only the
+    ///     nodes of the mesh's bounding-volume hierarchy that the surface crosses (volume methods;
+    ///     the surface methods always scan). ``"auto"`` takes the hierarchy from 64 triangles up.
+    ///     All give the same result up to round-off.
     /// about : array_like, shape (3,), optional
     ///     World point the torque is taken about; default the body's center of mass (the mesh
     ///     centroid moved by the pose).
@@ -310,9 +327,10 @@ impl PyMesh {
     /// >>> round(b.volume, 12), b.force.round(6).tolist()
     /// (0.75, [0.0, 7357.5, 0.0])
     #[pyo3(
-        signature = (position=None, rotation=None, water=None, method="exact", about=None),
-        text_signature = "(self, position=(0, 0, 0), rotation=None, water=None, method='exact', about=None)"
+        signature = (position=None, rotation=None, water=None, method="exact", about=None, traversal="auto"),
+        text_signature = "(self, position=(0, 0, 0), rotation=None, water=None, method='exact', about=None, traversal='auto')"
     )]
+    #[allow(clippy::too_many_arguments)]
     fn buoyancy(
         &self,
         py: Python<'_>,
@@ -321,8 +339,10 @@ impl PyMesh {
         water: Option<&Bound<'_, PyWater>>,
         method: &str,
         about: Option<&Bound<'_, PyAny>>,
+        traversal: &str,
     ) -> PyResult<PyBuoyancy> {
         let method = parse_method(method)?;
+        let traversal = parse_traversal(traversal)?;
         let pose = PyMesh::pose(position, rotation)?;
         let about = match about {
             Some(a) if !a.is_none() => Some(Point3::from(convert::vector3(a, "about")?)),
@@ -331,7 +351,7 @@ impl PyMesh {
         let water = water.map_or_else(buoyancy_core::Water::default, |w| w.get().inner);
         let mesh = &self.inner;
         let evaluate = move || {
-            let b = mesh.buoyancy(&pose, &water, method)?;
+            let b = mesh.buoyancy_with(&pose, &water, method, traversal)?;
             Ok::<_, Error>(match about {
                 Some(q) => b.about(&q),
                 None => b,
@@ -364,6 +384,8 @@ impl PyMesh {
     /// threads : int, optional
     ///     Run on a pool of this many threads (kept for later calls); default rayon's global
     ///     pool (``RAYON_NUM_THREADS``, else one thread per core).
+    /// traversal : str
+    ///     ``"auto"`` (default), ``"scan"`` or ``"hierarchy"``, as in :meth:`buoyancy`.
     ///
     /// Returns
     /// -------
@@ -379,8 +401,8 @@ impl PyMesh {
     /// >>> batch.volume.round(12).tolist()
     /// [1.0, 1.0, 0.5, 0.0, 0.0]
     #[pyo3(
-        signature = (positions, rotations=None, water=None, method="exact", about=None, threads=None),
-        text_signature = "(self, positions, rotations, water=None, method='exact', about=None, threads=None)"
+        signature = (positions, rotations=None, water=None, method="exact", about=None, threads=None, traversal="auto"),
+        text_signature = "(self, positions, rotations, water=None, method='exact', about=None, threads=None, traversal='auto')"
     )]
     #[allow(clippy::too_many_arguments)]
     fn buoyancy_batch(
@@ -392,8 +414,10 @@ impl PyMesh {
         method: &str,
         about: Option<&Bound<'_, PyAny>>,
         threads: Option<usize>,
+        traversal: &str,
     ) -> PyResult<PyBuoyancyBatch> {
         let method = parse_method(method)?;
+        let traversal = parse_traversal(traversal)?;
         let translations = convert::rows3(positions, "positions")?;
         let k = translations.len();
         let rotations = match rotations {
@@ -449,7 +473,9 @@ impl PyMesh {
                         .par_iter()
                         .enumerate()
                         .map(|(i, pose)| {
-                            let b = mesh.buoyancy(pose, &water, method).map_err(|e| (i, e))?;
+                            let b = mesh
+                                .buoyancy_with(pose, &water, method, traversal)
+                                .map_err(|e| (i, e))?;
                             let b = match &about {
                                 About::CenterOfMass => b,
                                 About::Point(q) => b.about(q),
