@@ -10,27 +10,11 @@
 mod common;
 
 use std::hint::black_box;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use buoyancy::{shape, Mesh, Method, Traversal};
 use plotters::prelude::*;
 
-fn microseconds(per_call: usize, mut evaluate_all: impl FnMut()) -> f64 {
-    evaluate_all();
-    let mut batches: Vec<f64> = (0..7)
-        .map(|_| {
-            let started = Instant::now();
-            let mut calls = 0;
-            while started.elapsed() < Duration::from_millis(40) || calls < 2 {
-                evaluate_all();
-                calls += 1;
-            }
-            started.elapsed().as_secs_f64() * 1e6 / (calls * per_call) as f64
-        })
-        .collect();
-    batches.sort_by(f64::total_cmp);
-    batches[batches.len() / 2]
-}
 
 struct Row {
     triangles: usize,
@@ -61,7 +45,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .sum::<Result<f64, _>>()?
             / poses.len() as f64;
         let time = |traversal| {
-            microseconds(poses.len(), || {
+            common::microseconds(poses.len(), || {
                 for pose in &poses {
                     black_box(mesh.buoyancy_with(black_box(pose), &water, Method::Exact, traversal).unwrap());
                 }

@@ -10,30 +10,12 @@ mod common;
 
 use std::fmt::Write as _;
 use std::hint::black_box;
-use std::time::{Duration, Instant};
 
 use buoyancy::{Method, Real};
 
 const BEGIN: &str = "<!-- table:begin (written by `cargo bench --bench table`) -->";
 const END: &str = "<!-- table:end -->";
 
-/// Median over batches of the mean time of one call of `evaluate_all` divided by `per_call`.
-fn microseconds(per_call: usize, mut evaluate_all: impl FnMut()) -> f64 {
-    evaluate_all();
-    let mut batches: Vec<f64> = (0..7)
-        .map(|_| {
-            let started = Instant::now();
-            let mut calls = 0;
-            while started.elapsed() < Duration::from_millis(50) || calls < 2 {
-                evaluate_all();
-                calls += 1;
-            }
-            started.elapsed().as_secs_f64() * 1e6 / (calls * per_call) as f64
-        })
-        .collect();
-    batches.sort_by(f64::total_cmp);
-    batches[batches.len() / 2]
-}
 
 /// µs per evaluation of every method on every model.
 fn measure<T: Real>(models: &[common::Model<T>], parallel: bool) -> Vec<[f64; 5]> {
@@ -43,7 +25,7 @@ fn measure<T: Real>(models: &[common::Model<T>], parallel: bool) -> Vec<[f64; 5]
         .map(|model| {
             let poses = common::poses(&model.mesh);
             Method::ALL.map(|method| {
-                microseconds(poses.len(), || {
+                common::microseconds(poses.len(), || {
                     for pose in &poses {
                         #[cfg(feature = "rayon")]
                         if parallel {

@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 use std::path::PathBuf;
+use std::time::{Duration, Instant};
 
 use buoyancy::nalgebra::{Translation3, UnitQuaternion, Vector3};
 use buoyancy::{shape, Mesh, Pose, Real, Water};
@@ -78,4 +79,23 @@ pub fn poses<T: Real>(mesh: &Mesh<T>) -> Vec<Pose<T>> {
 
 pub fn water<T: Real>() -> Water<T> {
     Water::default()
+}
+
+/// Microseconds per evaluation: `evaluate_all` runs `per_call` evaluations; the figure is the
+/// median over 7 batches (each of at least 50 ms) of the mean time of one evaluation.
+pub fn microseconds(per_call: usize, mut evaluate_all: impl FnMut()) -> f64 {
+    evaluate_all();
+    let mut batches: Vec<f64> = (0..7)
+        .map(|_| {
+            let started = Instant::now();
+            let mut calls = 0;
+            while started.elapsed() < Duration::from_millis(50) || calls < 2 {
+                evaluate_all();
+                calls += 1;
+            }
+            started.elapsed().as_secs_f64() * 1e6 / (calls * per_call) as f64
+        })
+        .collect();
+    batches.sort_by(f64::total_cmp);
+    batches[batches.len() / 2]
 }
