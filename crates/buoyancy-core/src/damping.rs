@@ -11,17 +11,22 @@
 //! angular velocity and `v_w` the water's velocity (the current), the velocity of a surface point
 //! `p` relative to the water is `u(p) = v + ω × (p − c) − v_w`.
 //!
-//! **Pressure drag.** Each wetted triangle (a fully submerged triangle, or the part under water
-//! of a triangle the surface cuts, see [`Method::Exact`](crate::Method::Exact)) of area `A`,
-//! outward unit normal `n̂` and centroid `p` has the normal velocity `u_n = n̂·u(p)`. When the
-//! triangle pushes into the water (`u_n > 0`, it faces the flow) it feels the pressure
-//! `P = c₁·u_n + ½·ρ·C_D·u_n²` (Pa) over its area, against its normal:
+//! **Pressure drag.** On the wetted surface (the fully submerged triangles and the parts under
+//! water of the triangles the surface cuts, see [`Method::Exact`](crate::Method::Exact)), with
+//! `n̂` the outward unit normal, the normal velocity `u_n = n̂·u(p)` is linear over each flat
+//! triangle. Where the surface pushes into the water (`u_n > 0`, it faces the flow) it feels the
+//! pressure `P = c₁·u_n + ½·ρ·C_D·u_n²` (Pa), against its normal:
 //!
 //! ```text
-//! F_i = −P·A·n̂,    τ_i = (p − c) × F_i.
+//! F = −∫ P n̂ dA,    τ = −∫ (p − c) × P n̂ dA   over { u_n > 0 }.
 //! ```
 //!
-//! Triangles moving away from the water (`u_n ≤ 0`, the wake side) feel nothing, and neither
+//! Both are integrated exactly: each wetted triangle is clipped where `u_n = 0`, and on the part
+//! where `u_n > 0` the polynomials `u_n`, `u_n²`, `u_n·p`, `u_n²·p` are integrated in closed form
+//! (with barycentric coordinates, `∫ λᵢλⱼλₖ dA = A/60·(1 + δᵢⱼ + δⱼₖ + δᵢₖ + 2δᵢⱼδⱼₖ)`), so the
+//! result does not depend on how a flat face is split into triangles.
+//!
+//! The surface moving away from the water (`u_n ≤ 0`, the wake side) feels nothing, and neither
 //! does anything above the surface, so the force is zero in air and grows with what is
 //! submerged.
 //!
@@ -207,6 +212,27 @@ impl<T: Real> Mesh<T> {
         let zero = T::zero();
 
         let mut sums = DragSums { force: Vector3::zeros(), torque: Vector3::zeros(), area2: zero };
+        let (third, twelfth, sixtieth) = (T::lit(1.0 / 3.0), T::lit(1.0 / 12.0), T::lit(1.0 / 60.0));
+        // The drag on a flat piece `q` of unit normal `normal` and area `area` where the normal
+        // velocity, `u` at the corners, is non-negative.
+        let mut drag = |q: [Vector3<T>; 3], u: [T; 3], normal: &Vector3<T>, area: T| {
+            let sum_u = u[0] + u[1] + u[2];
+            let sum_u2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+            let sum_q = q[0] + q[1] + q[2];
+            let sum_uq = q[0] * u[0] + q[1] * u[1] + q[2] * u[2];
+            let sum_u2q = q[0] * (u[0] * u[0]) + q[1] * (u[1] * u[1]) + q[2] * (u[2] * u[2]);
+            // ∫u, ∫u², ∫u·p, ∫u²·p over the piece.
+            let int_u = area * sum_u * third;
+            let int_u2 = area * (sum_u2 + sum_u * sum_u) * twelfth;
+            let int_uq = (sum_uq + sum_q * sum_u) * (area * twelfth);
+            let int_u2q = (sum_q * (sum_u * sum_u + sum_u2) + sum_uq * (sum_u + sum_u) + sum_u2q * T::lit(2.0))
+                * (area * sixtieth);
+            let pressure = int_u * linear + int_u2 * quadratic;
+            let moment = int_uq * linear + int_u2q * quadratic;
+            sums.force -= normal * pressure;
+            // −∫ p × P n̂ dA = n̂ × ∫ P p dA
+            sums.torque += normal.cross(&moment);
+        };
         let mut add = |p: [Vector3<T>; 3]| {
             let area2 = (p[1] - p[0]).cross(&(p[2] - p[0]));
             let norm2 = area2.norm();
@@ -214,17 +240,29 @@ impl<T: Real> Mesh<T> {
                 return;
             }
             sums.area2 += norm2;
-            let centroid = (p[0] + p[1] + p[2]) / T::lit(3.0);
-            let u = velocity + omega.cross(&centroid);
-            // u_n·|2A| = n̂·u·|2A|
-            let un = area2.dot(&u) / norm2;
-            if un > zero {
-                let pressure = linear * un + quadratic * un * un;
-                let force = area2 * (-pressure * half);
-                sums.force += force;
-                sums.torque += centroid.cross(&force);
+            let normal = area2 / norm2;
+            let un = [
+                normal.dot(&(velocity + omega.cross(&p[0]))),
+                normal.dot(&(velocity + omega.cross(&p[1]))),
+                normal.dot(&(velocity + omega.cross(&p[2]))),
+            ];
+            if un[0] <= zero && un[1] <= zero && un[2] <= zero {
+                return;
+            }
+            if un[0] >= zero && un[1] >= zero && un[2] >= zero {
+                drag(p, un, &normal, norm2 * half);
+            } else {
+                // Keep the part where u_n > 0: "under" the level set −u_n = 0.
+                clip_below(p, [-un[0], -un[1], -un[2]], |q, minus_u| {
+                    let area = (q[1] - q[0]).cross(&(q[2] - q[0])).norm() * half;
+                    drag(q, [-minus_u[0], -minus_u[1], -minus_u[2]], &normal, area);
+                });
             }
         };
+        if frame.height >= self.bounding_radius {
+            // Entirely above the surface.
+            return Ok(Damping::zero(frame.center_of_mass));
+        }
         for i in 0..self.triangles.len() {
             let v = self.corners(i);
             let h = frame.heights(&v);
@@ -282,6 +320,38 @@ mod tests {
 
     fn damp(mesh: &Mesh<f64>, pose: &Pose<f64>, v: Vector3<f64>, w: Vector3<f64>) -> Damping<f64> {
         mesh.damping(pose, &v, &w, &Water::default(), &DampingCoefficients::default()).unwrap()
+    }
+
+    /// A fully submerged unit cube spinning at ω about z: each side face pushes on the half where
+    /// `u_n = ω|y| > 0`, so `τ_z = −4·(c₁ω/24 + qω²/64)` with `q = ½ρC_D`, whatever the
+    /// triangulation of the faces, and nothing else.
+    #[test]
+    fn spinning_cube_is_exact_for_any_triangulation() {
+        let omega = 3.0;
+        let expected = -4.0 * (1000.0 * omega / 24.0 + 500.0 * omega * omega / 64.0);
+        for n in [1, 2, 5] {
+            let (v, t) = shape::cube::<f64>(n);
+            let c = Mesh::new(v, t).unwrap();
+            let d = damp(&c, &at(0.0, -3.0, 0.0), Vector3::zeros(), Vector3::new(0.0, 0.0, omega));
+            assert!(d.force.norm() < 1e-9, "{n}: {:?}", d.force);
+            let drag_z = d.torque.z - (-(0.1 + 0.1 * omega) * 1000.0 * omega); // minus the angular term (V = 1, f = 1)
+            assert!((drag_z - expected).abs() < 1e-9, "{n}: {drag_z} vs {expected}");
+            assert!(d.torque.x.abs() < 1e-9 && d.torque.y.abs() < 1e-9, "{n}: {:?}", d.torque);
+        }
+        // Half submerged and moving too: the same for every triangulation.
+        let results: alloc::vec::Vec<Damping<f64>> = [1, 3, 6]
+            .into_iter()
+            .map(|n| {
+                let (v, t) = shape::cube::<f64>(n);
+                let c = Mesh::new(v, t).unwrap();
+                let pose = Pose::from_parts(Translation3::new(0.0, 0.1, 0.0), UnitQuaternion::from_euler_angles(0.2, 0.1, 0.3));
+                damp(&c, &pose, Vector3::new(0.5, -1.0, 0.3), Vector3::new(0.4, -1.0, 2.0))
+            })
+            .collect();
+        for d in &results[1..] {
+            assert!((d.force - results[0].force).norm() < 1e-9 * results[0].force.norm(), "{:?} vs {:?}", d.force, results[0].force);
+            assert!((d.torque - results[0].torque).norm() < 1e-9 * results[0].torque.norm(), "{:?} vs {:?}", d.torque, results[0].torque);
+        }
     }
 
     #[test]
