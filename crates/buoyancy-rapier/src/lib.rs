@@ -54,10 +54,10 @@ mod shapes;
 
 use std::collections::HashMap;
 
-use buoyancy_core::nalgebra::{Point3, Vector3};
+use buoyancy_core::nalgebra::{Matrix3, Point3, Vector3};
 use buoyancy_core::{DampingCoefficients, Mesh, Method, Pose, Water};
 use rapier3d::math::Vector;
-use rapier3d::prelude::{ColliderHandle, ColliderSet, RigidBody, RigidBodyHandle, RigidBodySet};
+use rapier3d::prelude::{ColliderHandle, ColliderSet, RigidBody, RigidBodyHandle, RigidBodySet, RigidBodyType};
 
 pub use buoyancy_core;
 pub use error::Error;
@@ -163,11 +163,19 @@ struct FloatingBody {
     handle: RigidBodyHandle,
     parts: Vec<FloatingPart>,
     options: FloatOptions,
+    /// Total volume (m³) and surface area (m²) of the parts, for the body's angular damping.
+    volume: f64,
+    surface_area: f64,
     /// The force and torque the adapter has added to the body and not taken back yet.
     applied_force: Vector,
     applied_torque: Vector,
+    /// The force and torque applied the last time the body was awake: a sleeping body is woken
+    /// when the adapter's share has changed enough since.
+    awake_force: Vector,
+    awake_torque: Vector,
     report: FloatReport,
-    /// What the next application adds: computed in parallel, applied serially.
+    /// The force and torque to hold from now on, computed in parallel, applied serially;
+    /// `None`: leave the share as it is (a body that is not dynamic, or disabled).
     pending: Option<(Vector, Vector)>,
 }
 
@@ -265,7 +273,15 @@ impl FloatingBodies {
         let rigid_body = bodies.get(body).ok_or(Error::UnknownBody(body))?;
         let selected: Vec<ColliderHandle> = match &options.colliders {
             FloatingColliders::All => rigid_body.colliders().to_vec(),
-            FloatingColliders::Only(list) => list.clone(),
+            FloatingColliders::Only(list) => {
+                let mut unique = Vec::with_capacity(list.len());
+                for &handle in list {
+                    if !unique.contains(&handle) {
+                        unique.push(handle);
+                    }
+                }
+                unique
+            }
         };
         let mut parts = Vec::new();
         for handle in selected {
@@ -279,17 +295,23 @@ impl FloatingBodies {
         if parts.is_empty() {
             return Err(Error::NothingToFloat(body));
         }
+        let volume = parts.iter().map(|p| p.mesh.volume()).sum();
+        let surface_area = parts.iter().map(|p| p.mesh.surface_area()).sum();
         if let Some(&i) = self.index.get(&body) {
-            self.bodies[i].parts = parts;
-            self.bodies[i].options = options;
+            let b = &mut self.bodies[i];
+            (b.parts, b.options, b.volume, b.surface_area) = (parts, options, volume, surface_area);
         } else {
             self.index.insert(body, self.bodies.len());
             self.bodies.push(FloatingBody {
                 handle: body,
                 parts,
                 options,
+                volume,
+                surface_area,
                 applied_force: Vector::ZERO,
                 applied_torque: Vector::ZERO,
+                awake_force: Vector::ZERO,
+                awake_torque: Vector::ZERO,
                 report: FloatReport::default(),
                 pending: None,
             });
@@ -306,18 +328,21 @@ impl FloatingBodies {
             self.index.insert(moved.handle, i);
         }
         if let Some(rb) = bodies.get_mut(body) {
-            rb.add_force(-removed.applied_force, false);
-            rb.add_torque(-removed.applied_torque, false);
+            take_back(rb, removed.applied_force, removed.applied_torque);
         }
         true
     }
 
     /// Tells the adapter that the application reset the forces and torques of `body`
     /// (`RigidBody::reset_forces` / `reset_torques`), so that its own share is zero now.
+    ///
+    /// Also the cure for the `f32` drift of the body's accumulated force (see the
+    /// [crate documentation](crate)): `reset_forces`, `reset_torques`, re-add the application's own
+    /// forces, `forget_applied`; the next [`apply`](Self::apply) adds the whole share again.
     pub fn forget_applied(&mut self, body: RigidBodyHandle) {
         if let Some(&i) = self.index.get(&body) {
-            self.bodies[i].applied_force = Vector::ZERO;
-            self.bodies[i].applied_torque = Vector::ZERO;
+            let b = &mut self.bodies[i];
+            (b.applied_force, b.applied_torque) = (Vector::ZERO, Vector::ZERO);
         }
     }
 
@@ -339,9 +364,12 @@ impl FloatingBodies {
     /// Computes buoyancy and damping for every registered body at its current pose and
     /// velocity, and sets the body's share of the applied force and torque to it (see the
     /// [crate documentation](crate) on forces the application adds itself). Call it once per
-    /// step, before `PhysicsPipeline::step`, with the step's `dt` (s), which only bounds the
-    /// damping impulse. Bodies removed from `bodies` are forgotten; fixed and kinematic bodies
-    /// get nothing. With the `rayon` feature the bodies are computed in parallel.
+    /// step, before `PhysicsPipeline::step`, with the step's `dt` (s), which the damping's
+    /// stability scheme needs (see [Stability](crate#stability)). Bodies removed from `bodies`
+    /// are forgotten. Fixed, kinematic and disabled bodies get nothing new: their share is left
+    /// as it is (rapier ignores `add_force` on bodies that are not dynamic but keeps their stored
+    /// force), and holds again when they are dynamic and enabled again. With the `rayon` feature
+    /// the bodies are computed in parallel.
     ///
     /// No allocation once every body has been seen (the meshes are prepared at registration).
     pub fn apply(&mut self, bodies: &mut RigidBodySet, dt: f32) {
@@ -354,9 +382,15 @@ impl FloatingBodies {
         let shared: &RigidBodySet = bodies;
         let compute = |b: &mut FloatingBody| {
             let rb = &shared[b.handle];
+            // Force and torque both exactly zero while the adapter's share is not: rapier wiped
+            // them (its NaN quarantine does, or `reset_forces` + `reset_torques`).
+            let ours = b.applied_force != Vector::ZERO || b.applied_torque != Vector::ZERO;
+            if ours && rb.is_dynamic() && rb.user_force() == Vector::ZERO && rb.user_torque() == Vector::ZERO {
+                (b.applied_force, b.applied_torque) = (Vector::ZERO, Vector::ZERO);
+            }
             let (report, wrench) = evaluate(b, rb, world, f64::from(dt));
             b.report = report;
-            b.pending = Some(wrench);
+            b.pending = wrench;
         };
         #[cfg(feature = "rayon")]
         {
@@ -369,34 +403,77 @@ impl FloatingBodies {
         for b in &mut self.bodies {
             let Some((force, torque)) = b.pending.take() else { continue };
             let rb = &mut bodies[b.handle];
+            let sleeping = rb.is_sleeping();
+            // Wake a sleeping body only for a change that matters (say the water moved), measured
+            // from what it felt when it was last awake, so that slow changes add up.
+            let g = b.options.water.as_ref().unwrap_or(&self.water).gravity() as f32;
+            let weight = rb.mass() * g;
+            let size = b.volume.max(0.0).cbrt() as f32;
+            let (changed_force, changed_torque) = (force - b.awake_force, torque - b.awake_torque);
+            let force_scale = b.awake_force.length() + weight + f32::MIN_POSITIVE;
+            let wake = changed_force.length() > 1e-3 * force_scale
+                || changed_torque.length() > 1e-3 * (b.awake_torque.length() + force_scale * size);
             let (delta_force, delta_torque) = (force - b.applied_force, torque - b.applied_torque);
-            if delta_force == Vector::ZERO && delta_torque == Vector::ZERO {
-                continue;
+            if delta_force != Vector::ZERO || delta_torque != Vector::ZERO {
+                rb.add_force(delta_force, wake);
+                rb.add_torque(delta_torque, wake);
+                (b.applied_force, b.applied_torque) = (force, torque);
             }
-            // Wake a sleeping body only for a change that matters (say the water moved).
-            let scale = force.length() + rb.mass() * 9.81 * 1e-3 + f32::MIN_POSITIVE;
-            let wake = delta_force.length() > 1e-3 * scale || delta_torque.length() > 1e-3 * (torque.length() + scale);
-            rb.add_force(delta_force, wake);
-            rb.add_torque(delta_torque, wake);
-            b.applied_force = force;
-            b.applied_torque = torque;
+            if !sleeping || wake {
+                (b.awake_force, b.awake_torque) = (force, torque);
+            }
         }
     }
 }
 
-/// Buoyancy + damping of one body: its report and the force and torque to apply (rapier types,
-/// torque about the world center of mass). Zero for non-dynamic bodies and anything non-finite.
+/// Takes the adapter's share back off a body. rapier ignores `add_force` on bodies that are not
+/// dynamic, so those are made dynamic for the time of the subtraction.
+fn take_back(rb: &mut RigidBody, force: Vector, torque: Vector) {
+    if force == Vector::ZERO && torque == Vector::ZERO {
+        return;
+    }
+    let body_type = rb.body_type();
+    if !body_type.is_dynamic() {
+        rb.set_body_type(RigidBodyType::Dynamic, false);
+    }
+    rb.add_force(-force, false);
+    rb.add_torque(-torque, false);
+    if !body_type.is_dynamic() {
+        rb.set_body_type(body_type, false);
+    }
+}
+
+/// The generalized mass of a rigid body, `f64`: per-axis inverse mass (zero on locked axes),
+/// world inverse inertia (zero rows on locked axes), and world inertia (the locked axes' rows
+/// are meaningless: their angular velocity is zero).
+fn mass_matrices(rb: &RigidBody) -> (Vector3<f64>, Matrix3<f64>, Matrix3<f64>) {
+    let props = rb.mass_properties();
+    let i = &props.effective_world_inv_inertia;
+    let inv_inertia = Matrix3::new(i.m11, i.m12, i.m13, i.m12, i.m22, i.m23, i.m13, i.m23, i.m33).cast::<f64>();
+    let mut invertible = inv_inertia;
+    for k in 0..3 {
+        if invertible[(k, k)] == 0.0 {
+            invertible[(k, k)] = 1.0;
+        }
+    }
+    let inertia = invertible.try_inverse().unwrap_or_else(Matrix3::zeros);
+    (vector_to_nalgebra(props.effective_inv_mass), inv_inertia, inertia)
+}
+
+/// Buoyancy + damping of one body: its report and the force and torque to hold (rapier types,
+/// torque about the world center of mass). `None` for bodies that are not dynamic or disabled,
+/// zero for anything non-finite.
 fn evaluate(
     b: &FloatingBody,
     rb: &RigidBody,
     (world_water, world_method, world_damping): (&Water<f64>, Method, &DampingCoefficients<f64>),
     dt: f64,
-) -> (FloatReport, (Vector, Vector)) {
+) -> (FloatReport, Option<(Vector, Vector)>) {
     let center_of_mass = point_to_nalgebra(rb.center_of_mass());
-    let zero = (Vector::ZERO, Vector::ZERO);
+    let zero = Some((Vector::ZERO, Vector::ZERO));
     let skipped = FloatReport { center_of_mass, center_of_buoyancy: center_of_mass, skipped: true, ..Default::default() };
     if !rb.is_dynamic() || !rb.is_enabled() {
-        return (FloatReport { skipped: false, ..skipped }, zero);
+        return (FloatReport { skipped: false, ..skipped }, None);
     }
     let water = b.options.water.as_ref().unwrap_or(world_water);
     let method = b.options.method.unwrap_or(world_method);
@@ -404,6 +481,12 @@ fn evaluate(
     let body_pose = pose_to_nalgebra(rb.position());
     let velocity = vector_to_nalgebra(rb.linvel());
     let omega = vector_to_nalgebra(rb.angvel());
+
+    // The core's angular damping is per mesh, −f·ρ·V^{5/3}·(a₁ + a₂|ω|)·ω: with several parts,
+    // each part's term is replaced by one for the whole body (total volume and wetted fraction).
+    let several = b.parts.len() > 1;
+    let angular_rate = damping.angular_linear + damping.angular_quadratic * omega.norm();
+    let angular_size = |volume: f64| water.density() * volume.max(0.0).powf(5.0 / 3.0);
 
     let mut report = FloatReport { center_of_mass, ..Default::default() };
     let mut weighted_center = Vector3::zeros();
@@ -421,7 +504,14 @@ fn evaluate(
         report.buoyancy_torque += buoyancy.torque_about(&center_of_mass);
         report.damping_force += drag.force;
         report.damping_torque += drag.torque_about(&center_of_mass);
+        if several {
+            report.damping_torque += omega * (drag.wetted_fraction * angular_size(part.mesh.volume()) * angular_rate);
+        }
         report.wetted_area += drag.wetted_area;
+    }
+    if several && b.surface_area > 0.0 {
+        let wetted_fraction = (report.wetted_area / b.surface_area).min(1.0);
+        report.damping_torque -= omega * (wetted_fraction * angular_size(b.volume) * angular_rate);
     }
     report.center_of_buoyancy = if report.submerged_volume.abs() > 0.0 {
         Point3::from(weighted_center / report.submerged_volume)
@@ -429,18 +519,35 @@ fn evaluate(
         water.project(&center_of_mass)
     };
 
-    // Stability clamp of the explicit damping (see the crate documentation).
-    let mass = f64::from(rb.mass());
-    let relative_speed = (velocity - damping.current).norm();
-    let impulse = report.damping_force.norm() * dt;
-    if mass > 0.0 && impulse > mass * relative_speed {
-        report.damping_force *= mass * relative_speed / impulse;
-    }
-    let inverse_inertia = &rb.mass_properties().effective_world_inv_inertia;
-    let spin_change = vector_to_nalgebra(inverse_inertia.mul_vec(vector_to_rapier(&report.damping_torque))).norm() * dt;
-    let spin = omega.norm();
-    if spin_change > spin {
-        report.damping_torque *= spin / spin_change;
+    // Semi-implicit damping (see the crate documentation): about the current velocity, the
+    // damping wrench W = (F, τ) is linearised as W − α·M·Δq̇ (α, 1/s, the damping rate in the
+    // metric of the generalized mass M), and solved for the end of the step, with the step's
+    // other forces G (buoyancy, gravity, the application's own): W' = (W − α·dt·G)/(1 + α·dt).
+    let (inv_mass, inv_inertia, inertia) = mass_matrices(rb);
+    let (damping_force, damping_torque) = (report.damping_force, report.damping_torque);
+    let relative_velocity = velocity - damping.current;
+    // W·M⁻¹W and q̇·M·q̇ (locked axes left out).
+    let wrench_norm2 = damping_force.dot(&inv_mass.component_mul(&damping_force)) + damping_torque.dot(&(inv_inertia * damping_torque));
+    let linear_momentum_norm2: f64 = (0..3)
+        .filter(|&i| inv_mass[i] > 0.0)
+        .map(|i| relative_velocity[i] * relative_velocity[i] / inv_mass[i])
+        .sum();
+    let velocity_norm2 = linear_momentum_norm2 + omega.dot(&(inertia * omega));
+    let rate = if wrench_norm2 > 0.0 && velocity_norm2 > 0.0 { (wrench_norm2 / velocity_norm2).sqrt() } else { 0.0 };
+    if rate > 0.0 && dt > 0.0 {
+        let gravity = -water.normal().into_inner() * (water.gravity() * f64::from(rb.gravity_scale()));
+        let own_force = vector_to_nalgebra(rb.user_force() - b.applied_force);
+        let own_torque = vector_to_nalgebra(rb.user_torque() - b.applied_torque);
+        let mut other_force = report.buoyancy_force + gravity * f64::from(rb.mass()) + own_force;
+        for i in 0..3 {
+            if inv_mass[i] == 0.0 {
+                other_force[i] = 0.0;
+            }
+        }
+        let other_torque = report.buoyancy_torque + own_torque;
+        let h = rate * dt;
+        report.damping_force = (damping_force - other_force * h) / (1.0 + h);
+        report.damping_torque = (damping_torque - other_torque * h) / (1.0 + h);
     }
 
     let force = report.buoyancy_force + report.damping_force;
@@ -449,5 +556,5 @@ fn evaluate(
     if !(force.is_finite() && torque.is_finite() && report.center_of_buoyancy.iter().all(|c| c.is_finite())) {
         return (skipped, zero);
     }
-    (report, (force, torque))
+    (report, Some((force, torque)))
 }
