@@ -69,7 +69,7 @@ fn with_weld<V>((v, t): (Vec<V>, Vec<[u32; 3]>)) -> (Vec<V>, Vec<[u32; 3]>, bool
 
 /// Merges vertices closer than 1e-6 of the mesh's extent (parry's generated meshes repeat the
 /// seam and pole vertices) and drops the triangles that collapse.
-fn weld_vertices(points: &mut Vec<Point3<f64>>, triangles: &mut Vec<[u32; 3]>) {
+fn weld_vertices(points: &mut [Point3<f64>], triangles: &mut Vec<[u32; 3]>) {
     if points.is_empty() {
         return;
     }
