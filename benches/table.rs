@@ -11,14 +11,26 @@ mod common;
 use std::fmt::Write as _;
 use std::hint::black_box;
 
-use buoyancy::{Method, Real};
+use buoyancy::{Method, Real, Traversal};
 
 const BEGIN: &str = "<!-- table:begin (written by `cargo bench --bench table`) -->";
 const END: &str = "<!-- table:end -->";
 
 
+/// How the timed evaluations run.
+#[derive(Clone, Copy, PartialEq)]
+enum Mode {
+    /// `Mesh::buoyancy`: the default traversal (the hierarchy for the volume methods).
+    Default,
+    /// One thread, every triangle (`Traversal::Scan`).
+    Scan,
+    /// `Mesh::par_buoyancy`: every triangle, in parallel chunks.
+    #[cfg_attr(not(feature = "rayon"), allow(dead_code))]
+    Parallel,
+}
+
 /// µs per evaluation of every method on every model.
-fn measure<T: Real>(models: &[common::Model<T>], parallel: bool) -> Vec<[f64; 5]> {
+fn measure<T: Real>(models: &[common::Model<T>], mode: Mode) -> Vec<[f64; 5]> {
     let water = common::water::<T>();
     models
         .iter()
@@ -27,13 +39,16 @@ fn measure<T: Real>(models: &[common::Model<T>], parallel: bool) -> Vec<[f64; 5]
             Method::ALL.map(|method| {
                 common::microseconds(poses.len(), || {
                     for pose in &poses {
-                        #[cfg(feature = "rayon")]
-                        if parallel {
-                            black_box(model.mesh.par_buoyancy(black_box(pose), &water, method).unwrap());
-                            continue;
-                        }
-                        let _ = parallel;
-                        black_box(model.mesh.buoyancy(black_box(pose), &water, method).unwrap());
+                        let pose = black_box(pose);
+                        let result = match mode {
+                            Mode::Default => model.mesh.buoyancy(pose, &water, method),
+                            Mode::Scan => model.mesh.buoyancy_with(pose, &water, method, Traversal::Scan),
+                            #[cfg(feature = "rayon")]
+                            Mode::Parallel => model.mesh.par_buoyancy(pose, &water, method),
+                            #[cfg(not(feature = "rayon"))]
+                            Mode::Parallel => unreachable!("parallel figures need --features rayon"),
+                        };
+                        black_box(result.unwrap());
                     }
                 })
             })
@@ -100,13 +115,13 @@ fn main() {
     let paper_idx: Vec<usize> = paper_models.iter().map(|(i, _)| *i).collect();
     let large_idx: Vec<usize> = large.iter().map(|(i, _)| *i).collect();
 
-    let serial64 = measure(&models64, false);
-    let serial32 = measure(&models32, false);
+    let serial64 = measure(&models64, Mode::Default);
+    let serial32 = measure(&models32, Mode::Default);
     let names = |idx: &[usize]| idx.iter().map(|&i| models64[i].name.clone()).collect::<Vec<_>>();
     let pick = |f: &[[f64; 5]], idx: &[usize]| idx.iter().map(|&i| f[i]).collect::<Vec<_>>();
 
     let mut report = format!("Machine: {}\n\n", machine());
-    report += "Mean time per evaluation over the paper's 100 poses, one thread, f64 (the paper's figure and our speed-up in parentheses):\n\n";
+    report += "Mean time per evaluation over the paper's 100 poses, one thread, f64, `Mesh::buoyancy` (the default traversal: the hierarchy for the volume methods, the scan for the surface methods); the paper's figure and our speed-up in parentheses:\n\n";
     let paper: Vec<[f64; 5]> = paper_idx.iter().map(|&i| models64[i].paper_ms.unwrap()).collect();
     report += &table(&names(&paper_idx), &pick(&serial64, &paper_idx), Some(&paper));
     report += "\nThe same in f32:\n\n";
@@ -117,17 +132,20 @@ fn main() {
         let labels: Vec<String> = large_idx.iter().flat_map(|&i| [format!("{} f64", models64[i].name), format!("{} f32", models64[i].name)]).collect();
         report += &table(&labels, &both, None);
     }
+    let all: Vec<usize> = paper_idx.iter().chain(&large_idx).copied().collect();
+    let mut labels = names(&paper_idx);
+    labels.extend(names(&large_idx));
+    let scan64 = measure(&models64, Mode::Scan);
+    report += "\nEvery triangle visited (`Traversal::Scan`), one thread, f64:\n\n";
+    report += &table(&labels, &pick(&scan64, &all), None);
     #[cfg(feature = "rayon")]
     {
-        let parallel64 = measure(&models64, true);
+        let parallel64 = measure(&models64, Mode::Parallel);
         let threads = rayon::current_num_threads();
-        report += &format!("\nWith rayon on {threads} threads (`par_buoyancy`), f64, and the speed-up over one thread:\n\n");
-        let mut labels = names(&paper_idx);
-        labels.extend(names(&large_idx));
-        let all: Vec<usize> = paper_idx.iter().chain(&large_idx).copied().collect();
+        report += &format!("\nThe scan split across {threads} threads by rayon (`par_buoyancy`), f64, and its speed-up over the one-thread scan:\n\n");
         let mut out = table(&labels, &pick(&parallel64, &all), None);
         for (k, _) in Method::ALL.iter().enumerate() {
-            let speedups: Vec<String> = all.iter().map(|&i| format!("{:.2}×", serial64[i][k] / parallel64[i][k])).collect();
+            let speedups: Vec<String> = all.iter().map(|&i| format!("{:.2}×", scan64[i][k] / parallel64[i][k])).collect();
             let _ = writeln!(out, "| speed-up, {} | {} |", method_label(Method::ALL[k]), speedups.join(" | "));
         }
         report += &out;
