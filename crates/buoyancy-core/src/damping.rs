@@ -199,7 +199,8 @@ impl<T: Real> Mesh<T> {
         if !linear_velocity.iter().chain(angular_velocity.iter()).all(|c| c.is_finite()) {
             return Err(Error::InvalidVelocity);
         }
-        if coefficients.is_off() {
+        // Switched off, or entirely above the surface.
+        if coefficients.is_off() || frame.height >= self.bounding_radius {
             return Ok(Damping::zero(frame.center_of_mass));
         }
         // Everything in the mesh frame, relative to the centroid.
@@ -259,10 +260,6 @@ impl<T: Real> Mesh<T> {
                 });
             }
         };
-        if frame.height >= self.bounding_radius {
-            // Entirely above the surface.
-            return Ok(Damping::zero(frame.center_of_mass));
-        }
         for i in 0..self.triangles.len() {
             let v = self.corners(i);
             let h = frame.heights(&v);
