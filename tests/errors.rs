@@ -148,3 +148,13 @@ fn f32_matches_f64() {
         }
     }
 }
+
+#[test]
+fn traversal_names_round_trip() {
+    for t in Traversal::ALL {
+        assert_eq!(t.name().parse::<Traversal>().unwrap(), t);
+    }
+    assert_eq!("Hierarchy".parse::<Traversal>().unwrap(), Traversal::Hierarchy);
+    let e = "bvh".parse::<Traversal>().unwrap_err();
+    assert!(e.to_string().contains("auto, scan, hierarchy"), "{e}");
+}

@@ -97,6 +97,11 @@ pub enum Error {
         /// The name given.
         name: String,
     },
+    /// A traversal name that is not one of [`Traversal::name`](crate::Traversal::name).
+    UnknownTraversal {
+        /// The name given.
+        name: String,
+    },
     /// A mesh file could not be read.
     Io {
         /// The file's path.
@@ -169,6 +174,10 @@ impl fmt::Display for Error {
             Error::UnknownMethod { name } => write!(
                 f,
                 "unknown method {name:?}; valid methods are fast, improved, exact, fast_surface, exact_surface"
+            ),
+            Error::UnknownTraversal { name } => write!(
+                f,
+                "unknown traversal {name:?}; valid traversals are auto, scan, hierarchy"
             ),
             Error::Io { path, message } => write!(f, "cannot read {path}: {message}"),
             Error::Parse { line, message } => {

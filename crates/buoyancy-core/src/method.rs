@@ -89,12 +89,16 @@ impl FromStr for Method {
     fn from_str(s: &str) -> Result<Self, Error> {
         Method::ALL
             .into_iter()
-            .find(|m| {
-                m.name().len() == s.len()
-                    && m.name().bytes().zip(s.bytes()).all(|(a, b)| {
-                        a == b.to_ascii_lowercase() || (a == b'_' && b == b'-')
-                    })
-            })
+            .find(|m| names_match(m.name(), s))
             .ok_or_else(|| Error::UnknownMethod { name: s.into() })
     }
+}
+
+/// Whether `given` spells the snake-case `name`, ignoring case and accepting `-` for `_`.
+pub(crate) fn names_match(name: &str, given: &str) -> bool {
+    name.len() == given.len()
+        && name
+            .bytes()
+            .zip(given.bytes())
+            .all(|(a, b)| a == b.to_ascii_lowercase() || (a == b'_' && b == b'-'))
 }

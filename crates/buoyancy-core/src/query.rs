@@ -123,6 +123,30 @@ impl Traversal {
     /// The mesh size, in triangles, from which `Auto` walks the hierarchy (measured: see
     /// `benches/RESULTS.md`).
     pub const CROSSOVER: usize = 64;
+
+    /// All three traversals.
+    pub const ALL: [Traversal; 3] = [Traversal::Auto, Traversal::Scan, Traversal::Hierarchy];
+
+    /// The traversal's name: `auto`, `scan` or `hierarchy`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Traversal::Auto => "auto",
+            Traversal::Scan => "scan",
+            Traversal::Hierarchy => "hierarchy",
+        }
+    }
+}
+
+impl core::str::FromStr for Traversal {
+    type Err = Error;
+
+    /// Parses a name of [`Traversal::name`] (case-insensitive).
+    fn from_str(s: &str) -> Result<Self, Error> {
+        Traversal::ALL
+            .into_iter()
+            .find(|t| crate::method::names_match(t.name(), s))
+            .ok_or_else(|| Error::UnknownTraversal { name: s.into() })
+    }
 }
 
 /// Sums a volume method accumulates: `VolumeSums`, or a pair whose first member takes the

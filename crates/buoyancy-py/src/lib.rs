@@ -63,15 +63,7 @@ fn parse_method(method: &str) -> PyResult<Method> {
 }
 
 fn parse_traversal(traversal: &str) -> PyResult<Traversal> {
-    match traversal {
-        "auto" => Ok(Traversal::Auto),
-        "scan" => Ok(Traversal::Scan),
-        "hierarchy" => Ok(Traversal::Hierarchy),
-        other => Err(arg_error(
-            "traversal",
-            format!("unknown traversal {other:?}; valid traversals are auto, scan, hierarchy"),
-        )),
-    }
+    traversal.parse().map_err(|e| to_py(e, Some("traversal")))
 }
 
 /// Vertices and triangles, as `buoyancy_core::Mesh::new` takes them.
