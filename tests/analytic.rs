@@ -128,7 +128,9 @@ fn fast_error_persists_and_improved_error_shrinks_with_resolution() {
     let cube_cone = |h: f64| h.abs() / 3.0;
     let sphere_cone = |h: f64| PI * (1.0 - h * h) * h.abs() / 3.0;
     type Curve<'a> = &'a dyn Fn(f64) -> f64;
-    let cases: [(&str, Mesh<f64>, Mesh<f64>, Curve, Curve, f64); 2] = [
+    /// Name, coarse and fine mesh, analytic force, Fast's limit error, range of h.
+    type Case<'a> = (&'a str, Mesh<f64>, Mesh<f64>, Curve<'a>, Curve<'a>, f64);
+    let cases: [Case; 2] = [
         ("cube", cube(10), cube(100), &cube_curve, &cube_cone, 1.0),
         ("sphere", sphere(50), sphere(200), &sphere_curve, &sphere_cone, 2.0),
     ];

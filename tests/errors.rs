@@ -7,7 +7,7 @@ use buoyancy::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
 use buoyancy::{shape, Error, Mesh, Method, Pose, Traversal, Water};
 use common::{meshes_dir, shared_meshes};
 
-fn load(name: &str) -> Option<(Vec<Point3<f64>>, Vec<[u32; 3]>)> {
+fn load(name: &str) -> Option<shape::Shape<f64>> {
     let path = meshes_dir()?.join(name);
     Some(buoyancy::io::load(path).unwrap())
 }

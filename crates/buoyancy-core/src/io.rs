@@ -96,7 +96,7 @@ pub fn parse_stl<T: Real>(bytes: &[u8]) -> Result<Shape<T>, Error> {
         .get(80..84)
         .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]));
     let looks_ascii = bytes.trim_ascii_start().starts_with(b"solid")
-        && declared.map_or(true, |n| binary_size(n) != bytes.len());
+        && declared.is_none_or(|n| binary_size(n) != bytes.len());
     if looks_ascii {
         let text = core::str::from_utf8(bytes)
             .map_err(|_| parse_error(0, "ASCII STL that is not valid UTF-8".into()))?;

@@ -122,6 +122,8 @@ impl<T: Real> Mesh<T> {
         );
         let middle = (lo + hi) * 0.5;
         let (mut volume, mut moment, scale) = volume_moments(&points, &triangles, &middle);
+        // Negated so that a NaN volume is rejected too.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
         if !(volume.abs() > 1e-12 * scale) {
             return Err(Error::ZeroVolume { volume, scale });
         }
