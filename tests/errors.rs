@@ -3,7 +3,7 @@
 
 mod common;
 
-use buoyancy::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
+use buoyancy::nalgebra::{Translation3, UnitQuaternion, Vector3};
 use buoyancy::{shape, Error, Mesh, Method, Pose, Traversal, Water};
 use common::{meshes_dir, shared_meshes};
 
