@@ -1,9 +1,9 @@
 //! Cost against mesh size, scan against hierarchy: procedural torus knots from 32 to 10⁶
 //! triangles under the paper's protocol (100 poses from almost dry to almost submerged), the
-//! mean time per `Exact` evaluation (f64, one thread), with the hierarchy's build time and
-//! memory. Prints a Markdown table and writes `benches/scaling.csv` and `benches/scaling.png`
-//! (log-log: time per evaluation against triangles; red the scan, blue the hierarchy, grey
-//! lines at every decade).
+//! mean time per `Exact` and `Exact Surface` evaluation (f64, one thread), with the hierarchy's
+//! build time and memory. Prints a Markdown table and writes `benches/scaling.csv` and
+//! `benches/scaling.png` (log-log: time per evaluation against triangles; red the scan, blue the
+//! hierarchy, thick lines `Exact` and thin lines `Exact Surface`, grey lines at every decade).
 //!
 //! `cargo bench --bench scaling`
 
@@ -19,8 +19,9 @@ use plotters::prelude::*;
 struct Row {
     triangles: usize,
     waterline: f64,
-    scan: f64,
-    hierarchy: f64,
+    /// µs per evaluation, scan then hierarchy, for `Exact` and `Exact Surface`.
+    exact: [f64; 2],
+    surface: [f64; 2],
     build_ms: f64,
     bytes_per_triangle: f64,
 }
@@ -44,18 +45,19 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .map(|p| mesh.buoyancy(p, &water, Method::Exact).map(|b| b.partially_submerged as f64))
             .sum::<Result<f64, _>>()?
             / poses.len() as f64;
-        let time = |traversal| {
+        let time = |method, traversal| {
             common::microseconds(poses.len(), || {
                 for pose in &poses {
-                    black_box(mesh.buoyancy_with(black_box(pose), &water, Method::Exact, traversal).unwrap());
+                    black_box(mesh.buoyancy_with(black_box(pose), &water, method, traversal).unwrap());
                 }
             })
         };
+        let both = |method| [Traversal::Scan, Traversal::Hierarchy].map(|traversal| time(method, traversal));
         let row = Row {
             triangles: mesh.triangle_count(),
             waterline,
-            scan: time(Traversal::Scan),
-            hierarchy: time(Traversal::Hierarchy),
+            exact: both(Method::Exact),
+            surface: both(Method::ExactSurface),
             build_ms,
             bytes_per_triangle: mesh.hierarchy_bytes() as f64 / mesh.triangle_count() as f64,
         };
@@ -63,15 +65,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         rows.push(row);
     }
 
-    println!("| triangles | waterline triangles (mean) | scan µs | hierarchy µs | scan / hierarchy | build ms (validation + precomputation + hierarchy) | hierarchy bytes per triangle |");
-    println!("|---|---|---|---|---|---|---|");
-    let mut csv = String::from("triangles,waterline,scan_us,hierarchy_us,build_ms,hierarchy_bytes_per_triangle\n");
+    println!("| triangles | waterline triangles (mean) | Exact, scan µs | Exact, hierarchy µs | scan / hierarchy | Exact Surface, scan µs | Exact Surface, hierarchy µs | scan / hierarchy | build ms (validation + precomputation + hierarchy) | hierarchy bytes per triangle |");
+    println!("|---|---|---|---|---|---|---|---|---|---|");
+    let mut csv = String::from(
+        "triangles,waterline,exact_scan_us,exact_hierarchy_us,surface_scan_us,surface_hierarchy_us,build_ms,hierarchy_bytes_per_triangle\n",
+    );
     for r in &rows {
+        let ([es, eh], [ss, sh]) = (r.exact, r.surface);
         println!(
-            "| {} | {:.1} | {:.2} | {:.2} | {:.1}× | {:.2} | {:.1} |",
-            r.triangles, r.waterline, r.scan, r.hierarchy, r.scan / r.hierarchy, r.build_ms, r.bytes_per_triangle
+            "| {} | {:.1} | {es:.2} | {eh:.2} | {:.1}× | {ss:.2} | {sh:.2} | {:.1}× | {:.2} | {:.1} |",
+            r.triangles, r.waterline, es / eh, ss / sh, r.build_ms, r.bytes_per_triangle
         );
-        csv += &format!("{},{},{},{},{},{}\n", r.triangles, r.waterline, r.scan, r.hierarchy, r.build_ms, r.bytes_per_triangle);
+        csv += &format!("{},{},{es},{eh},{ss},{sh},{},{}\n", r.triangles, r.waterline, r.build_ms, r.bytes_per_triangle);
     }
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("benches");
     std::fs::write(dir.join("scaling.csv"), csv)?;
@@ -88,13 +93,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let y = decade as f64;
         chart.draw_series(LineSeries::new([(1.0, y), (6.2, y)], RGBColor(215, 215, 215)))?;
     }
-    for (pick, colour) in [(0, RED), (1, BLUE)] {
-        let points = rows.iter().map(|r| {
-            let t = if pick == 0 { r.scan } else { r.hierarchy };
-            ((r.triangles as f64).log10(), t.log10())
-        });
-        chart.draw_series(LineSeries::new(points.clone(), colour.stroke_width(3)))?;
-        chart.draw_series(points.map(|p| Circle::new(p, 4, colour.filled())))?;
+    for (surface, width) in [(false, 3), (true, 1)] {
+        for (traversal, colour) in [(0, RED), (1, BLUE)] {
+            let points = rows.iter().map(|r| {
+                let t = if surface { r.surface[traversal] } else { r.exact[traversal] };
+                ((r.triangles as f64).log10(), t.log10())
+            });
+            chart.draw_series(LineSeries::new(points.clone(), colour.stroke_width(width)))?;
+            chart.draw_series(points.map(|p| Circle::new(p, width + 1, colour.filled())))?;
+        }
     }
     root.present()?;
     eprintln!("wrote {} and {}", dir.join("scaling.csv").display(), png.display());

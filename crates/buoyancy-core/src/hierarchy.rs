@@ -12,6 +12,9 @@
 //! Sums are accumulated in `f64` at build time and taken about the centroid, so that a mesh far
 //! from its own origin does not lose digits.
 //!
+//! The surface methods' coefficients of the inner nodes live beside the nodes, in
+//! [`crate::surface_moments::NodeMoments`], indexed by node.
+//!
 //! # Query
 //! With `n` the up normal and `h_c` the centroid's height (both in the mesh frame), the heights
 //! of the points of a node's box lie in `n·m + h_c ± |n|·e` (`|n|` taken component-wise). A node
@@ -58,7 +61,8 @@ pub(crate) struct Hierarchy<T: Real> {
 
 /// What the walk found: a node entirely under water, or a leaf's triangles to examine one by one.
 pub(crate) enum Visit<'a, T: Real> {
-    Submerged(&'a Node<T>),
+    /// The node at this index, entirely under water.
+    Submerged(usize, &'a Node<T>),
     Triangles(core::ops::Range<usize>),
 }
 
@@ -104,7 +108,7 @@ impl<T: Real> Hierarchy<T> {
             let margin = eight_eps * (node.magnitude + height.abs());
             let (low, high) = (middle - radius, middle + radius);
             if high + margin < T::zero() {
-                visit(Visit::Submerged(node));
+                visit(Visit::Submerged(index as usize, node));
             } else if low - margin > T::zero() {
                 // Dry.
             } else if node.leaf {
@@ -117,6 +121,19 @@ impl<T: Real> Hierarchy<T> {
                 top += 2;
             }
         }
+    }
+
+    /// The children of node `index`, `None` for a leaf.
+    pub fn children(&self, index: usize) -> Option<(usize, usize)> {
+        let node = &self.nodes[index];
+        (!node.leaf).then(|| (index + 1, node.link as usize))
+    }
+
+    /// The triangles (in leaf order) of leaf `index`.
+    pub fn triangles(&self, index: usize) -> core::ops::Range<usize> {
+        let node = &self.nodes[index];
+        debug_assert!(node.leaf);
+        node.link as usize..(node.link + node.count) as usize
     }
 
     /// Bytes of memory the hierarchy uses.

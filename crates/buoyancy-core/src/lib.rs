@@ -52,6 +52,7 @@ mod method;
 mod query;
 mod real;
 pub mod shape;
+mod surface_moments;
 mod water;
 
 pub use damping::{Damping, DampingCoefficients};

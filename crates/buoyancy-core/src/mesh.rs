@@ -3,6 +3,7 @@ use alloc::vec::Vec;
 use nalgebra::{Point3, Vector3};
 
 use crate::hierarchy::Hierarchy;
+use crate::surface_moments::NodeMoments;
 use crate::{Error, Real};
 
 /// A closed, consistently oriented triangle mesh, validated and prepared for buoyancy queries.
@@ -67,6 +68,8 @@ pub struct Mesh<T: Real> {
     pub(crate) surface_area: T,
     /// The triangles' volume elements summed over a bounding-volume hierarchy.
     pub(crate) hierarchy: Hierarchy<T>,
+    /// The surface methods' pressure-integral coefficients of the hierarchy's inner nodes.
+    pub(crate) surface_moments: NodeMoments<T>,
     reoriented: bool,
 }
 
@@ -153,9 +156,12 @@ impl<T: Real> Mesh<T> {
         let bounding_radius = relative.iter().map(|v| v.norm()).fold(0.0, f64::max);
         let vertices: Vec<Vector3<T>> = relative.iter().map(|v| v.map(T::lit)).collect();
         let (hierarchy, order) = Hierarchy::build(&vertices, &triangles, &volume6, &moment24);
+        let leaf_triangles: Vec<[u32; 3]> = order.iter().map(|&i| triangles[i as usize]).collect();
+        let surface_moments = NodeMoments::build(&hierarchy, |i| leaf_triangles[i].map(|k| vertices[k as usize]));
         Ok(Mesh {
             vertices,
-            leaf_triangles: order.iter().map(|&i| triangles[i as usize]).collect(),
+            leaf_triangles,
+            surface_moments,
             tetra_volume6: order.iter().map(|&i| T::lit(volume6[i as usize])).collect(),
             tetra_moment24: order.iter().map(|&i| moment24[i as usize].map(T::lit)).collect(),
             hierarchy,
@@ -200,10 +206,12 @@ impl<T: Real> Mesh<T> {
     }
 
     /// Bytes of memory taken by the bounding-volume hierarchy of
-    /// [`Traversal::Hierarchy`](crate::Traversal::Hierarchy): its nodes and the triangles'
-    /// copy in leaf order.
+    /// [`Traversal::Hierarchy`](crate::Traversal::Hierarchy): its nodes with the volume and
+    /// surface sums, and the triangles' copy in leaf order.
     pub fn hierarchy_bytes(&self) -> usize {
-        self.hierarchy.memory() + self.leaf_triangles.len() * core::mem::size_of::<[u32; 3]>()
+        self.hierarchy.memory()
+            + self.surface_moments.memory()
+            + self.leaf_triangles.len() * core::mem::size_of::<[u32; 3]>()
     }
 
     /// Whether the input was wound inward (negative signed volume) and every triangle flipped.

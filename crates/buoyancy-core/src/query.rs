@@ -21,7 +21,12 @@
 //! segments (and over mesh edges lying exactly in the plane, where a submerged triangle meets a
 //! dry one). So `Exact` costs `Fast` plus work on the waterline triangles only. `Improved` is
 //! `Exact` about `o` minus the clipped parts, i.e. the tetrahedra from `o` to the fully
-//! submerged triangles. The surface methods integrate the pressure triangle by triangle.
+//! submerged triangles. The surface methods integrate the pressure triangle by triangle over the
+//! fully submerged triangles and, for `ExactSurface`, over the clipped waterline triangles.
+//!
+//! With the hierarchy (the default from [`Traversal::CROSSOVER`] triangles) the fully
+//! submerged triangles are mostly not visited at all: whole nodes under water add stored sums
+//! (see `hierarchy` and `surface_moments`), and the cost follows the waterline.
 //!
 //! # Determinism
 //! Triangles are summed in fixed chunks of [`CHUNK`] combined pairwise in a fixed tree, whether
@@ -32,6 +37,7 @@ use nalgebra::{Matrix3, Point3, UnitQuaternion, Vector3};
 
 use crate::hierarchy::Visit;
 use crate::integrals::{clip_below, Counts, Sums, SurfaceSums, VolumeSums};
+use crate::surface_moments::SurfaceMoments;
 use crate::{Error, Mesh, Method, Pose, Real, Water};
 
 /// Number of triangles summed sequentially before the pairwise combination.
@@ -102,10 +108,11 @@ impl<T: Real> Buoyancy<T> {
 /// * `Hierarchy` walks the mesh's bounding-volume hierarchy and opens only the nodes the water
 ///   surface crosses, adding the precomputed sums of the nodes entirely under water: cost
 ///   proportional to the waterline (the triangles the surface cuts) times the depth of the
-///   hierarchy, independent of the mesh size when the waterline is not. It serves the volume
-///   methods (`Fast`, `Improved`, `Exact`); the surface methods always scan.
-/// * `Auto` (the default) takes the hierarchy for the volume methods on meshes of at least
-///   [`Traversal::CROSSOVER`] triangles, and the scan otherwise.
+///   hierarchy, independent of the mesh size when the waterline is not. The volume methods
+///   store six-fold volumes and moments per node, the surface methods the coefficients of
+///   their pressure integrals as polynomials in the water plane (see `surface_moments`).
+/// * `Auto` (the default) takes the hierarchy on meshes of at least [`Traversal::CROSSOVER`]
+///   triangles, and the scan otherwise.
 ///
 /// `Mesh::par_buoyancy` (feature `rayon`) always scans, in parallel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
@@ -115,7 +122,7 @@ pub enum Traversal {
     Auto,
     /// Every triangle, once.
     Scan,
-    /// Only the nodes of the hierarchy the surface crosses (volume methods).
+    /// Only the nodes of the hierarchy the surface crosses.
     Hierarchy,
 }
 
@@ -248,10 +255,10 @@ impl<T: Real> Mesh<T> {
     /// bit-identical to the serial scan (`buoyancy_with(…, Traversal::Scan)`) and equal to
     /// [`Mesh::buoyancy`] up to round-off.
     ///
-    /// For the surface methods on large meshes this is the fastest way. For the volume methods
-    /// (`Fast`, `Improved`, `Exact`) the hierarchy walk of [`Mesh::buoyancy`] usually beats it
-    /// on one thread, since it only visits the waterline; parallelise across bodies or poses
-    /// instead.
+    /// The hierarchy walk of [`Mesh::buoyancy`] usually beats it on one thread, since it only
+    /// visits the waterline; parallelise across bodies or poses instead. This pays off when
+    /// most triangles are cut by the surface (waves of short wavelength against a fine mesh
+    /// are one day such a case) or to check the hierarchy.
     #[cfg(feature = "rayon")]
     pub fn par_buoyancy(
         &self,
@@ -324,7 +331,7 @@ impl<T: Real> Mesh<T> {
             Method::FastSurface | Method::ExactSurface => {
                 let exact = method == Method::ExactSurface;
                 // Positions relative to the centroid.
-                let sums = reduce(self.triangles.len(), parallel, &|s: &mut SurfaceSums<T>, i| {
+                let triangle = |s: &mut SurfaceSums<T>, i: usize| {
                     let v = self.corners(i);
                     let h = frame.heights(&v);
                     match classify(&h) {
@@ -340,7 +347,12 @@ impl<T: Real> Mesh<T> {
                         }
                         Side::Above => {}
                     }
-                });
+                };
+                let sums = if hierarchy {
+                    self.surface_walk(&frame, triangle)
+                } else {
+                    reduce(self.triangles.len(), parallel, &triangle)
+                };
                 self.surface_result(&frame, water, sums)
             }
         };
@@ -373,7 +385,7 @@ impl<T: Real> Mesh<T> {
         }
         let mut sums = S::zero();
         self.hierarchy.walk(&frame.normal_local, frame.height, |visit| match visit {
-            Visit::Submerged(node) => {
+            Visit::Submerged(_, node) => {
                 let s = sums.exact_mut();
                 s.volume6 += node.volume6;
                 s.moment24 += node.moment24;
@@ -385,6 +397,37 @@ impl<T: Real> Mesh<T> {
                 }
             }
         });
+        sums
+    }
+
+    /// The surface sums over the hierarchy: the triangles of the leaves the surface crosses go
+    /// through `triangle`; the inner nodes entirely under water add their stored coefficients,
+    /// evaluated once at the end (see [`crate::surface_moments`]), and the leaves entirely under
+    /// water integrate their few triangles directly.
+    fn surface_walk(&self, frame: &Frame<T>, triangle: impl Fn(&mut SurfaceSums<T>, usize)) -> SurfaceSums<T> {
+        let n = &frame.normal_local;
+        let mut sums = SurfaceSums::zero();
+        let mut whole = SurfaceMoments::zero();
+        self.hierarchy.walk(n, frame.height, |visit| match visit {
+            Visit::Submerged(index, node) => {
+                sums.counts.full += node.count as usize;
+                match self.surface_moments.get(index) {
+                    Some(moments) => whole.add(moments),
+                    None => {
+                        for i in self.hierarchy.triangles(index) {
+                            let v = self.corners(i);
+                            sums.add_triangle(n, v, frame.heights(&v));
+                        }
+                    }
+                }
+            }
+            Visit::Triangles(triangles) => {
+                for i in triangles {
+                    triangle(&mut sums, i);
+                }
+            }
+        });
+        whole.add_to(n, frame.height, &mut sums);
         sums
     }
 
