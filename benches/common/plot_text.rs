@@ -6,7 +6,7 @@
 //! shared by path: `#[path = "…/benches/common/plot_text.rs"] mod plot_text;`.
 //!
 //! The glyphs cover printable ASCII letters and digits, the punctuation the labels use
-//! (` .,:;-+/()[]=%'^_<>`), and `µ × − ° · ⁰–⁹ ⁻` (superscripts for exponents: `10⁶`). Any
+//! (` .,:;-+/()[]=%'^_<>`), and `µ ρ × − ° · ⁰–⁹ ⁻` (superscripts for exponents: `10⁶`). Any
 //! other character is drawn as a hollow box.
 #![allow(dead_code)]
 
@@ -64,6 +64,22 @@ impl Style {
 pub fn width(text: &str) -> i32 {
     let total: i32 = text.chars().map(|c| glyph(c).map_or(BOX[0].len(), |g| g[0].len()) as i32 + SPACING).sum();
     (total - SPACING).max(0)
+}
+
+/// `text` broken at spaces into lines at most `max` font pixels wide (a word wider than `max`
+/// gets a line of its own).
+pub fn wrap(text: &str, max: i32) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split(' ') {
+        match lines.last_mut() {
+            Some(line) if width(&format!("{line} {word}")) <= max => {
+                line.push(' ');
+                line.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
 }
 
 /// The rows of a character's glyph, top first: [`HEIGHT`] rows, or more with descenders.
@@ -205,6 +221,7 @@ const GLYPHS: &[(char, &[&str])] = &[
     ('×', &[".....", "#...#", ".#.#.", "..#..", ".#.#.", "#...#", "....."]),
     ('·', &[".", ".", ".", "#", ".", ".", "."]),
     ('°', &[".##.", "#..#", "#..#", ".##.", "....", "....", "...."]),
+    ('ρ', &[".....", ".....", ".###.", "#...#", "#...#", "#...#", "####.", "#....", "#...."]),
     ('µ', &[".....", ".....", "#...#", "#...#", "#...#", "#..##", "###.#", "#....", "#...."]),
     ('⁰', &[".#.", "#.#", "#.#", "#.#", ".#.", "...", "..."]),
     ('¹', &[".#.", "##.", ".#.", ".#.", "###", "...", "..."]),
@@ -252,6 +269,14 @@ mod tests {
         assert_eq!(width("10"), 11);
         assert_eq!(width("10⁶ µs"), 5 + 1 + 5 + 1 + 3 + 1 + 3 + 1 + 5 + 1 + 5);
         assert_eq!(width("\u{2603}"), 5); // no glyph: a box as wide as a digit
+    }
+
+    #[test]
+    fn wraps_at_spaces() {
+        let w = width("torus knot");
+        assert_eq!(wrap("torus knot (procedural), s = 0.3", w), ["torus knot", "(procedural),", "s = 0.3"]);
+        assert_eq!(wrap("cube, s = 0.1", 1000), ["cube, s = 0.1"]);
+        assert_eq!(wrap("", 10), [""]);
     }
 
     /// The ink drawn fills exactly the measured box: from the anchor, `width` across and
