@@ -6,15 +6,21 @@
 //! hierarchy, thick lines `Exact` and thin lines `Exact Surface`, grey lines at every decade).
 //!
 //! `cargo bench --bench scaling`
+//!
+//! With `BUOYANCY_SCALING_REPLOT=1` it measures nothing: it redraws `benches/scaling.png` from
+//! the rows of `benches/scaling.csv` (to restyle the plot without the minutes of measurement).
 
 mod common;
+#[path = "common/plot_text.rs"]
+mod plot_text;
 
 use std::hint::black_box;
 use std::time::Instant;
 
 use buoyancy::{shape, Mesh, Method, Traversal};
+use plot_text::{draw, Style};
 use plotters::prelude::*;
-
+use plotters::style::text_anchor::{HPos, VPos};
 
 struct Row {
     triangles: usize,
@@ -27,6 +33,13 @@ struct Row {
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("benches");
+    if std::env::var_os("BUOYANCY_SCALING_REPLOT").is_some_and(|v| !v.is_empty() && v != "0") {
+        let rows = read_csv(&dir.join("scaling.csv"))?;
+        plot(&rows, &dir.join("scaling.png"))?;
+        eprintln!("redrew {} from {}", dir.join("scaling.png").display(), dir.join("scaling.csv").display());
+        return Ok(());
+    }
     let water = common::water::<f64>();
     // (segments, sides): 2·segments·sides triangles.
     let sizes = [
@@ -78,23 +91,91 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         );
         csv += &format!("{},{},{es},{eh},{ss},{sh},{},{}\n", r.triangles, r.waterline, r.build_ms, r.bytes_per_triangle);
     }
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("benches");
     std::fs::write(dir.join("scaling.csv"), csv)?;
-
     let png = dir.join("scaling.png");
-    let root = BitMapBackend::new(&png, (900, 600)).into_drawing_area();
+    plot(&rows, &png)?;
+    eprintln!("wrote {} and {}", dir.join("scaling.csv").display(), png.display());
+    Ok(())
+}
+
+/// The rows of a `scaling.csv` written by [`main`], its columns found by name.
+fn read_csv(path: &std::path::Path) -> Result<Vec<Row>, Box<dyn std::error::Error>> {
+    let text = std::fs::read_to_string(path)?;
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap_or_default().split(',').collect();
+    let column = |name: &str| {
+        header.iter().position(|h| *h == name).ok_or_else(|| {
+            format!("{} has no column {name}: written by an older version? Run `cargo bench --bench scaling`", path.display())
+        })
+    };
+    let names = [
+        "triangles", "waterline", "exact_scan_us", "exact_hierarchy_us", "surface_scan_us", "surface_hierarchy_us",
+        "build_ms", "hierarchy_bytes_per_triangle",
+    ];
+    let columns = names.map(column);
+    let columns: Vec<usize> = columns.into_iter().collect::<Result<_, _>>()?;
+    let mut rows = Vec::new();
+    for line in lines.filter(|l| !l.trim().is_empty()) {
+        let fields: Vec<&str> = line.split(',').collect();
+        let value = |k: usize| -> Result<f64, Box<dyn std::error::Error>> {
+            let field = fields.get(columns[k]).ok_or_else(|| format!("short line in {}: {line}", path.display()))?;
+            Ok(field.trim().parse::<f64>()?)
+        };
+        rows.push(Row {
+            triangles: value(0)? as usize,
+            waterline: value(1)?,
+            exact: [value(2)?, value(3)?],
+            surface: [value(4)?, value(5)?],
+            build_ms: value(6)?,
+            bytes_per_triangle: value(7)?,
+        });
+    }
+    Ok(rows)
+}
+
+/// Log-log: µs per evaluation against triangles, with the built-in bitmap font for the text.
+fn plot(rows: &[Row], png: &std::path::Path) -> Result<(), Box<dyn std::error::Error>> {
+    const X: std::ops::Range<f64> = 1.0..6.2;
+    const Y: std::ops::Range<f64> = -1.5..4.5;
+    let grey = RGBColor(215, 215, 215);
+    let text = Style::new(2, BLACK);
+    let root = BitMapBackend::new(png, (1000, 680)).into_drawing_area();
     root.fill(&WHITE)?;
-    let mut chart = ChartBuilder::on(&root).margin(30).build_cartesian_2d(1.0f64..6.2, -1.5f64..4.5)?;
+    let mut chart = ChartBuilder::on(&root)
+        .margin_top(96)
+        .margin_right(36)
+        .margin_bottom(78)
+        .margin_left(124)
+        .build_cartesian_2d(X, Y)?;
+    let (x0, y0) = chart.backend_coord(&(X.start, Y.end));
+    let (x1, y1) = chart.backend_coord(&(X.end, Y.start));
+
+    draw(&root, "Cost per evaluation against mesh size", (x0, 14), Style::new(3, BLACK))?;
+    draw(&root, "Exact and Exact Surface on torus knots; f64, one thread, 100 poses", (x0, 50), text)?;
+
     for decade in 1..=6 {
         let x = decade as f64;
-        chart.draw_series(LineSeries::new([(x, -1.5), (x, 4.5)], RGBColor(215, 215, 215)))?;
+        chart.draw_series(LineSeries::new([(x, Y.start), (x, Y.end)], grey))?;
+        let (px, _) = chart.backend_coord(&(x, Y.start));
+        root.draw(&PathElement::new([(px, y1), (px, y1 + 5)], BLACK))?;
+        let exponent: String = decade.to_string().chars().map(superscript).collect();
+        draw(&root, &format!("10{exponent}"), (px, y1 + 12), text.anchor(HPos::Center, VPos::Top))?;
     }
-    for decade in -1..=4 {
+    draw(&root, "triangles", ((x0 + x1) / 2, y1 + 44), text.anchor(HPos::Center, VPos::Top))?;
+    let time = ["0.1 µs", "1 µs", "10 µs", "100 µs", "1 ms", "10 ms"];
+    for (decade, label) in (-1..=4).zip(time) {
         let y = decade as f64;
-        chart.draw_series(LineSeries::new([(1.0, y), (6.2, y)], RGBColor(215, 215, 215)))?;
+        chart.draw_series(LineSeries::new([(X.start, y), (X.end, y)], grey))?;
+        let (_, py) = chart.backend_coord(&(X.start, y));
+        root.draw(&PathElement::new([(x0 - 5, py), (x0, py)], BLACK))?;
+        draw(&root, label, (x0 - 10, py), text.anchor(HPos::Right, VPos::Center))?;
     }
-    for (surface, width) in [(false, 3), (true, 1)] {
-        for (traversal, colour) in [(0, RED), (1, BLUE)] {
+    draw(&root, "time per evaluation", (x0 - 112, (y0 + y1) / 2), text.anchor(HPos::Center, VPos::Top).up())?;
+
+    let series = [(false, 3, "Exact"), (true, 1, "Exact Surface")];
+    let traversals = [(0, RED, "scan"), (1, BLUE, "hierarchy")];
+    for (surface, width, _) in series {
+        for (traversal, colour, _) in traversals {
             let points = rows.iter().map(|r| {
                 let t = if surface { r.surface[traversal] } else { r.exact[traversal] };
                 ((r.triangles as f64).log10(), t.log10())
@@ -103,7 +184,30 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             chart.draw_series(points.map(|p| Circle::new(p, width + 1, colour.filled())))?;
         }
     }
+    root.draw(&Rectangle::new([(x0, y0), (x1, y1)], BLACK))?;
+
+    // The legend, in the empty top left corner.
+    let (lx, ly) = (x0 + 16, y0 + 16);
+    root.draw(&Rectangle::new([(lx, ly), (lx + 330, ly + 4 * 28 + 16)], WHITE.filled()))?;
+    root.draw(&Rectangle::new([(lx, ly), (lx + 330, ly + 4 * 28 + 16)], grey))?;
+    let mut y = ly + 14;
+    for (_, width, method) in series {
+        for (_, colour, traversal) in traversals {
+            root.draw(&PathElement::new([(lx + 12, y + 7), (lx + 52, y + 7)], colour.stroke_width(width)))?;
+            root.draw(&Circle::new((lx + 32, y + 7), width + 1, colour.filled()))?;
+            draw(&root, &format!("{method}, {traversal}"), (lx + 66, y), text)?;
+            y += 28;
+        }
+    }
     root.present()?;
-    eprintln!("wrote {} and {}", dir.join("scaling.csv").display(), png.display());
     Ok(())
+}
+
+/// The superscript of a decimal digit (other characters unchanged).
+fn superscript(digit: char) -> char {
+    match digit {
+        '0' => '⁰', '1' => '¹', '2' => '²', '3' => '³', '4' => '⁴',
+        '5' => '⁵', '6' => '⁶', '7' => '⁷', '8' => '⁸', '9' => '⁹',
+        c => c,
+    }
 }

@@ -19,6 +19,9 @@ use buoyancy_rapier::{FloatOptions, FloatingBodies};
 use plotters::prelude::*;
 use rapier3d::prelude::*;
 
+#[path = "../benches/common/plot_text.rs"]
+mod plot_text;
+
 const WATER_DENSITY: f64 = 1000.0;
 const SECONDS: f32 = 40.0;
 
@@ -203,7 +206,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all(&out)?;
     std::fs::write(out.join("floating.csv"), csv)?;
     let png = out.join("floating.png");
-    plot(&png, &series)?;
+    let names: Vec<String> = bodies.iter().map(|b| format!("{}, s = {}", b.name, b.density_ratio)).collect();
+    plot(&png, &series, &names)?;
     println!("wrote {} and {}", out.join("floating.csv").display(), png.display());
     println!("plot colours, in the table's order: {}", PALETTE_NAMES[..bodies.len().min(PALETTE_NAMES.len())].join(", "));
     println!("finished in {:.1} s", started.elapsed().as_secs_f64());
@@ -217,29 +221,115 @@ const PALETTE: [RGBColor; 12] = [
 ];
 const PALETTE_NAMES: [&str; 12] = ["red", "green", "blue", "orange", "purple", "cyan", "magenta", "olive", "teal", "brown", "maroon", "navy"];
 
-/// Two panels, without text (no font is needed): top, the height of each center of mass over
-/// time (the black line is the water surface); bottom, the tilt of each body's y axis, 0–180°.
-fn plot(path: &std::path::Path, series: &[Vec<(f32, f32, f32)>]) -> Result<(), Box<dyn std::error::Error>> {
-    let root = BitMapBackend::new(path, (1200, 800)).into_drawing_area();
+/// Pixel sizes of the plot: the image, the legend column on the right, the title band and
+/// each panel's margins around its chart (for its caption, tick labels and axis titles).
+const SIZE: (u32, u32) = (1400, 880);
+const LEGEND_WIDTH: u32 = 270;
+const TITLE_HEIGHT: u32 = 44;
+const MARGIN: (i32, i32, i32, i32) = (34, 44, 40, 112); // top, right, bottom, left
+
+/// Two panels sharing the time axis: top, the height of each center of mass over time (the
+/// black line is the water surface); bottom, the tilt of each body's y axis, 0–180°. The legend
+/// names the bodies in the table's order. Text is drawn with the built-in bitmap font.
+fn plot(path: &std::path::Path, series: &[Vec<(f32, f32, f32)>], names: &[String]) -> Result<(), Box<dyn std::error::Error>> {
+    use plot_text::{draw, Style};
+    use plotters::style::text_anchor::{HPos, VPos};
+
+    let root = BitMapBackend::new(path, SIZE).into_drawing_area();
     root.fill(&WHITE)?;
-    let (top, bottom) = root.split_vertically(400);
+    let (plots, legend) = root.split_horizontally(SIZE.0 - LEGEND_WIDTH);
+    let (_, panels) = plots.split_vertically(TITLE_HEIGHT);
+    let (top, bottom) = panels.split_vertically((SIZE.1 - TITLE_HEIGHT) / 2 - 10);
+    let text = Style::new(2, BLACK);
+    let grey = RGBColor(220, 220, 220);
+
     let heights = series.iter().flatten().map(|p| p.1);
     let (lo, hi) = heights.fold((0.0f32, 0.0f32), |(lo, hi), h| (lo.min(h), hi.max(h)));
-    for (area, range, pick) in [
-        (&top, (lo - 0.1)..(hi + 0.1), 1usize),
-        (&bottom, -5.0f32..185.0, 2usize),
-    ] {
-        let mut chart = ChartBuilder::on(area).margin(20).build_cartesian_2d(0.0f32..SECONDS, range)?;
+    let panels = [
+        (&top, (lo - 0.1)..(hi + 0.1), 1usize, "Height of each body's center of mass (black: the water surface)", "height (m)"),
+        (&bottom, -5.0f32..185.0, 2usize, "Tilt of each body's own y axis from the vertical", "tilt (°)"),
+    ];
+    let mut plot_left = 0;
+    for (area, range, pick, caption, y_title) in panels {
+        let (top_margin, right, bottom_margin, left) = MARGIN;
+        let bottom_margin = if pick == 2 { bottom_margin + 26 } else { bottom_margin };
+        let mut chart = ChartBuilder::on(area)
+            .margin_top(top_margin)
+            .margin_right(right)
+            .margin_bottom(bottom_margin)
+            .margin_left(left)
+            .build_cartesian_2d(0.0f32..SECONDS, range.clone())?;
+        let (x0, y0) = chart.backend_coord(&(0.0, range.end));
+        let (x1, y1) = chart.backend_coord(&(SECONDS, range.start));
+        plot_left = x0;
+
+        // Grid, ticks and their labels: every 5 s; heights every "nice" step, tilt every 45°.
+        let (y_ticks, decimals) = if pick == 1 { nice_ticks(range.clone(), 7) } else { ((0..=4).map(|i| 45.0 * i as f32).collect(), 0) };
         for t in (0..=SECONDS as i32).step_by(5) {
-            chart.draw_series(LineSeries::new([(t as f32, chart.y_range().start), (t as f32, chart.y_range().end)], RGBColor(220, 220, 220)))?;
+            let t = t as f32;
+            chart.draw_series(LineSeries::new([(t, range.start), (t, range.end)], grey))?;
+            let (x, _) = chart.backend_coord(&(t, range.start));
+            root.draw(&PathElement::new([(x, y1), (x, y1 + 5)], BLACK))?;
+            draw(&root, &format!("{t}"), (x, y1 + 10), text.anchor(HPos::Center, VPos::Top))?;
         }
+        for &v in &y_ticks {
+            chart.draw_series(LineSeries::new([(0.0, v), (SECONDS, v)], grey))?;
+            let (_, y) = chart.backend_coord(&(0.0, v));
+            root.draw(&PathElement::new([(x0 - 5, y), (x0, y)], BLACK))?;
+            let label = format!("{v:.decimals$}").replace('-', "−");
+            let label = if pick == 2 { format!("{label}°") } else { label };
+            draw(&root, &label, (x0 - 10, y), text.anchor(HPos::Right, VPos::Center))?;
+        }
+        draw(&root, caption, (x0, y0 - 12), text.anchor(HPos::Left, VPos::Bottom))?;
+        draw(&root, y_title, (x0 - 78, (y0 + y1) / 2), text.anchor(HPos::Center, VPos::Top).up())?;
+        if pick == 2 {
+            draw(&root, "time (s)", ((x0 + x1) / 2, y1 + 36), text.anchor(HPos::Center, VPos::Top))?;
+        }
+
         let zero = if pick == 1 { 0.0 } else { 90.0 };
         chart.draw_series(LineSeries::new([(0.0, zero), (SECONDS, zero)], BLACK.stroke_width(1)))?;
         for (i, points) in series.iter().enumerate() {
             let colour = PALETTE[i % PALETTE.len()];
             chart.draw_series(LineSeries::new(points.iter().map(|p| (p.0, if pick == 1 { p.1 } else { p.2 })), colour.stroke_width(2)))?;
         }
+        root.draw(&Rectangle::new([(x0, y0), (x1, y1)], BLACK))?;
+    }
+
+    draw(
+        &root,
+        &format!("{} bodies dropped into still water in rapier3d, buoyancy by the Exact method", series.len()),
+        (plot_left, TITLE_HEIGHT as i32 - 6),
+        Style::new(3, BLACK).anchor(HPos::Left, VPos::Bottom),
+    )?;
+
+    // The legend: a line of each colour and the body's name and relative density.
+    let (lx, ly) = legend.get_base_pixel();
+    let (lx, mut y) = (lx + 10, ly + TITLE_HEIGHT as i32 + MARGIN.0);
+    draw(&root, "body, relative density", (lx, y), text)?;
+    draw(&root, "s = ρ body / ρ water", (lx, y + 24), text)?;
+    y += 58;
+    for (i, name) in names.iter().enumerate() {
+        let colour = PALETTE[i % PALETTE.len()];
+        root.draw(&PathElement::new([(lx, y + 7), (lx + 28, y + 7)], colour.stroke_width(4)))?;
+        for line in plot_text::wrap(name, (LEGEND_WIDTH as i32 - 58) / text.scale) {
+            draw(&root, &line, (lx + 38, y), text)?;
+            y += 22;
+        }
+        y += 6;
     }
     root.present()?;
     Ok(())
+}
+
+/// Tick values inside `range`: multiples of the smallest of 0.1, 0.2, 0.25, 0.5, 1, 2, 2.5, 5…
+/// giving at most `most` ticks, and the decimals they need.
+fn nice_ticks(range: std::ops::Range<f32>, most: usize) -> (Vec<f32>, usize) {
+    let steps = [(0.1, 1), (0.2, 1), (0.25, 2), (0.5, 1), (1.0, 0), (2.0, 0), (2.5, 1), (5.0, 0), (10.0, 0)];
+    for (step, decimals) in steps {
+        let ticks: Vec<f32> = ((range.start / step).ceil() as i32..=(range.end / step).floor() as i32).map(|k| k as f32 * step).collect();
+        if ticks.len() <= most {
+            return (ticks, decimals);
+        }
+    }
+    (vec![range.start, range.end], 1)
 }
