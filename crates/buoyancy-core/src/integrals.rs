@@ -154,10 +154,21 @@ impl<T: Real> SurfaceSums<T> {
     }
 }
 
-/// Calls `emit` with the part of triangle `p` (vertex heights `h`) that lies under water, as one
-/// or two triangles with the orientation of `p` and their vertex heights (exactly zero on the
-/// waterline), and returns the waterline segment oriented as the *cap* (the part of the water
-/// plane inside the body, facing up) traverses it: opposite to the submerged part's boundary.
+/// A triangle the water plane crosses, split at the waterline: the "odd" vertex `a`, alone on
+/// its side, the other two `b`, `c` in the triangle's order after it, their heights, and the
+/// waterline points `ab` on edge a→b and `ca` on edge c→a (heights exactly zero).
+pub(crate) struct Split<T: Real> {
+    /// Whether `a` is the only vertex under water (else it is the only one above).
+    pub odd_is_below: bool,
+    pub a: Vector3<T>,
+    pub b: Vector3<T>,
+    pub c: Vector3<T>,
+    pub heights: [T; 3],
+    pub ab: Vector3<T>,
+    pub ca: Vector3<T>,
+}
+
+/// Splits triangle `p` (vertex heights `h`) at the waterline.
 ///
 /// Precondition: the triangle crosses the plane, `min(h) < 0 < max(h)`. A vertex with `h = 0`
 /// counts as under water; the result is continuous in `h` either way. The "odd" vertex, alone
@@ -165,11 +176,7 @@ impl<T: Real> SurfaceSums<T> {
 /// zero because the two ends of a cut edge lie strictly on opposite sides or one is the
 /// strictly negative minimum.
 #[inline(always)]
-pub(crate) fn clip_below<T: Real>(
-    p: [Vector3<T>; 3],
-    h: [T; 3],
-    mut emit: impl FnMut([Vector3<T>; 3], [T; 3]),
-) -> [Vector3<T>; 2] {
+pub(crate) fn split<T: Real>(p: [Vector3<T>; 3], h: [T; 3]) -> Split<T> {
     let zero = T::zero();
     let below = [h[0] <= zero, h[1] <= zero, h[2] <= zero];
     let below_count = below.iter().filter(|&&b| b).count();
@@ -185,9 +192,31 @@ pub(crate) fn clip_below<T: Real>(
     let (i1, i2) = ((odd + 1) % 3, (odd + 2) % 3);
     let (a, b, c) = (p[odd], p[i1], p[i2]);
     let (ha, hb, hc) = (h[odd], h[i1], h[i2]);
-    // Waterline points on edges a→b and c→a.
-    let ab = a + (b - a) * (ha / (ha - hb));
-    let ca = a + (c - a) * (ha / (ha - hc));
+    Split {
+        odd_is_below,
+        a,
+        b,
+        c,
+        heights: [ha, hb, hc],
+        ab: a + (b - a) * (ha / (ha - hb)),
+        ca: a + (c - a) * (ha / (ha - hc)),
+    }
+}
+
+/// Calls `emit` with the part of triangle `p` (vertex heights `h`) that lies under water, as one
+/// or two triangles with the orientation of `p` and their vertex heights (exactly zero on the
+/// waterline), and returns the waterline segment oriented as the *cap* (the part of the water
+/// plane inside the body, facing up) traverses it: opposite to the submerged part's boundary.
+///
+/// Precondition as for [`split`].
+#[inline(always)]
+pub(crate) fn clip_below<T: Real>(
+    p: [Vector3<T>; 3],
+    h: [T; 3],
+    mut emit: impl FnMut([Vector3<T>; 3], [T; 3]),
+) -> [Vector3<T>; 2] {
+    let zero = T::zero();
+    let Split { odd_is_below, a, b, c, heights: [ha, hb, hc], ab, ca } = split(p, h);
     if odd_is_below {
         // Submerged: (a, ab, ca), whose boundary runs ab → ca along the waterline.
         emit([a, ab, ca], [ha, zero, zero]);

@@ -36,7 +36,7 @@
 use nalgebra::{Matrix3, Point3, UnitQuaternion, Vector3};
 
 use crate::hierarchy::Visit;
-use crate::integrals::{clip_below, Counts, Sums, SurfaceSums, VolumeSums};
+use crate::integrals::{clip_below, split, Counts, Split, Sums, SurfaceSums, VolumeSums};
 use crate::surface_moments::SurfaceMoments;
 use crate::{Error, Mesh, Method, Pose, Real, Water};
 
@@ -478,14 +478,39 @@ impl<T: Real> Mesh<T> {
             }
             Side::Crossing => {
                 exact.counts.partial += 1;
-                let [from, to] = clip_below(v, h, |p, _| {
-                    exact.add_tetrahedron(p);
-                    if improved {
-                        // Improved leaves these out; remember them about `apex`.
-                        clipped.add_tetrahedron([p[0] - apex, p[1] - apex, p[2] - apex]);
+                // The submerged part and its share of the cap from one small tetrahedron at the
+                // odd vertex: with `x = ab × ca`, the part (a, ab, ca) and the cap's triangle
+                // (apex, ca, ab) give `det = a·x − apex·x`. When `a` is the one vertex above,
+                // the submerged part is the whole triangle (its precomputed tetrahedron) minus
+                // (a, ab, ca), and the cap's triangle is reversed: the same terms, negated.
+                let Split { odd_is_below, a, b, c, ab, ca, .. } = split(v, h);
+                let x = ab.cross(&ca);
+                let (part, cap) = (a.dot(&x), apex.dot(&x));
+                let rim = ab + ca;
+                let volume6 = part - cap;
+                let moment24 = (a + rim) * part - (apex + rim) * cap;
+                if odd_is_below {
+                    exact.volume6 += volume6;
+                    exact.moment24 += moment24;
+                } else {
+                    exact.volume6 += self.tetra_volume6[i] - volume6;
+                    exact.moment24 += self.tetra_moment24[i] - moment24;
+                }
+                if improved {
+                    // Improved leaves the submerged part out; remember it about `apex`:
+                    // (a, ab, ca), or the whole triangle minus it.
+                    let (a, b, c, ab, ca) = (a - apex, b - apex, c - apex, ab - apex, ca - apex);
+                    let part = a.dot(&ab.cross(&ca));
+                    let part_moment = (a + ab + ca) * part;
+                    if odd_is_below {
+                        clipped.volume6 += part;
+                        clipped.moment24 += part_moment;
+                    } else {
+                        let whole = a.dot(&b.cross(&c));
+                        clipped.volume6 += whole - part;
+                        clipped.moment24 += (a + b + c) * whole - part_moment;
                     }
-                });
-                exact.add_tetrahedron([*apex, from, to]);
+                }
             }
             Side::Above => {}
         }
