@@ -152,6 +152,18 @@ impl<T: Real> SurfaceSums<T> {
         self.torque24 += w.cross(&area2);
         self.moment24 += (w - n * (q * T::lit(0.5))) * n.dot(&area2);
     }
+
+    /// Adds `sign` times [`add_triangle`](Self::add_triangle) of the corner `[a, ab, ca]` cut
+    /// off a triangle at the waterline, whose heights are `[h_a, 0, 0]`: then `Σh = h_a`,
+    /// `w = h_a (2a + ab + ca)` and `q = 2h_a²`.
+    #[inline(always)]
+    pub fn add_corner(&mut self, n: &Vector3<T>, [a, ab, ca]: [Vector3<T>; 3], h_a: T, sign: T) {
+        let area2 = (ab - a).cross(&(ca - a)) * sign;
+        let w = (a + a + ab + ca) * h_a;
+        self.force6 += area2 * h_a;
+        self.torque24 += w.cross(&area2);
+        self.moment24 += (w - n * (h_a * h_a)) * n.dot(&area2);
+    }
 }
 
 /// A triangle the water plane crosses, split at the waterline: the "odd" vertex `a`, alone on
@@ -286,6 +298,21 @@ mod tests {
         let mut total = Vector3::zeros();
         clip_below(p, h, |q, _| total += area(&q));
         assert!((total - area(&p) / 2.0).norm() < 1e-15);
+    }
+
+    #[test]
+    fn corner_kernel_is_the_triangle_kernel() {
+        let n = Vector3::new(0.2, 0.9, -0.3).normalize();
+        let (a, ab, ca) = (Vector3::new(0.3, -1.2, 0.5), Vector3::new(1.1, 0.2, -0.4), Vector3::new(-0.7, 0.3, 0.9));
+        for sign in [1.0, -1.0] {
+            let (mut corner, mut triangle) = (SurfaceSums::<f64>::zero(), SurfaceSums::<f64>::zero());
+            corner.add_corner(&n, [a, ab, ca], -0.8, sign);
+            let (b, c) = if sign > 0.0 { (ab, ca) } else { (ca, ab) };
+            triangle.add_triangle(&n, [a, b, c], [-0.8, 0.0, 0.0]);
+            assert!((corner.force6 - triangle.force6).norm() < 1e-14);
+            assert!((corner.torque24 - triangle.torque24).norm() < 1e-14);
+            assert!((corner.moment24 - triangle.moment24).norm() < 1e-14);
+        }
     }
 
     #[test]

@@ -36,7 +36,7 @@
 use nalgebra::{Matrix3, Point3, UnitQuaternion, Vector3};
 
 use crate::hierarchy::Visit;
-use crate::integrals::{clip_below, split, Counts, Split, Sums, SurfaceSums, VolumeSums};
+use crate::integrals::{split, Counts, Split, Sums, SurfaceSums, VolumeSums};
 use crate::surface_moments::SurfaceMoments;
 use crate::{Error, Mesh, Method, Pose, Real, Water};
 
@@ -342,7 +342,14 @@ impl<T: Real> Mesh<T> {
                         Side::Crossing => {
                             s.counts.partial += 1;
                             if exact {
-                                clip_below(v, h, |p, hp| s.add_triangle(&n, p, hp));
+                                // The corner at the odd vertex, or the whole triangle minus it.
+                                let Split { odd_is_below, a, ab, ca, heights, .. } = split(v, h);
+                                if odd_is_below {
+                                    s.add_corner(&n, [a, ab, ca], heights[0], T::one());
+                                } else {
+                                    s.add_triangle(&n, v, h);
+                                    s.add_corner(&n, [a, ab, ca], heights[0], -T::one());
+                                }
                             }
                         }
                         Side::Above => {}
