@@ -121,7 +121,7 @@ fn main() {
     let pick = |f: &[[f64; 5]], idx: &[usize]| idx.iter().map(|&i| f[i]).collect::<Vec<_>>();
 
     let mut report = format!("Machine: {}\n\n", machine());
-    report += "Mean time per evaluation over the paper's 100 poses, one thread, f64, `Mesh::buoyancy` (the default traversal: the hierarchy, from 64 triangles); the paper's figure and our speed-up in parentheses:\n\n";
+    report += "Mean time per evaluation over the paper's 100 poses, one thread, f64, `Mesh::buoyancy` (the default traversal: the hierarchy, from 128 triangles); the paper's figure and our speed-up in parentheses:\n\n";
     let paper: Vec<[f64; 5]> = paper_idx.iter().map(|&i| models64[i].paper_ms.unwrap()).collect();
     report += &table(&names(&paper_idx), &pick(&serial64, &paper_idx), Some(&paper));
     report += "\nThe same in f32:\n\n";

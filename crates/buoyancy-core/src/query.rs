@@ -129,7 +129,7 @@ pub enum Traversal {
 impl Traversal {
     /// The mesh size, in triangles, from which `Auto` walks the hierarchy (measured: see
     /// `benches/RESULTS.md`).
-    pub const CROSSOVER: usize = 64;
+    pub const CROSSOVER: usize = 128;
 
     /// All three traversals.
     pub const ALL: [Traversal; 3] = [Traversal::Auto, Traversal::Scan, Traversal::Hierarchy];

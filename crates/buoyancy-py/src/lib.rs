@@ -302,7 +302,7 @@ impl PyMesh {
     /// traversal : str
     ///     ``"auto"`` (default), ``"scan"`` or ``"hierarchy"``: visit every triangle, or only the
     ///     nodes of the mesh's bounding-volume hierarchy that the surface crosses.
-    ///     ``"auto"`` takes the hierarchy from 64 triangles up.
+    ///     ``"auto"`` takes the hierarchy from 128 triangles up.
     ///     All give the same result up to round-off.
     /// about : array_like, shape (3,), optional
     ///     World point the torque is taken about; default the body's center of mass (the mesh
