@@ -256,9 +256,8 @@ impl<T: Real> Mesh<T> {
     /// [`Mesh::buoyancy`] up to round-off.
     ///
     /// The hierarchy walk of [`Mesh::buoyancy`] usually beats it on one thread, since it only
-    /// visits the waterline; parallelise across bodies or poses instead. This pays off when
-    /// most triangles are cut by the surface (waves of short wavelength against a fine mesh
-    /// are one day such a case) or to check the hierarchy.
+    /// visits the waterline; parallelise across bodies or poses instead. The parallel scan
+    /// pays off when the surface cuts most of the triangles, or to check the hierarchy.
     #[cfg(feature = "rayon")]
     pub fn par_buoyancy(
         &self,
