@@ -409,24 +409,23 @@ impl<T: Real> Mesh<T> {
     /// The surface sums over the hierarchy: the triangles of the leaves the surface crosses go
     /// through `triangle`; the inner nodes entirely under water add their stored coefficients,
     /// evaluated once at the end (see [`crate::surface_moments`]), and the leaves entirely under
-    /// water integrate their few triangles directly.
+    /// water pass their few triangles through `triangle` too.
     fn surface_walk(&self, frame: &Frame<T>, triangle: impl Fn(&mut SurfaceSums<T>, usize)) -> SurfaceSums<T> {
         let n = &frame.normal_local;
         let mut sums = SurfaceSums::zero();
         let mut whole = SurfaceMoments::zero();
         self.hierarchy.walk(n, frame.height, |visit| match visit {
-            Visit::Submerged(index, node) => {
-                sums.counts.full += node.count as usize;
-                match self.surface_moments.get(index) {
-                    Some(moments) => whole.add(moments),
-                    None => {
-                        for i in self.hierarchy.triangles(index) {
-                            let v = self.corners(i);
-                            sums.add_triangle(n, v, frame.heights(&v));
-                        }
+            Visit::Submerged(index, node) => match self.surface_moments.get(index) {
+                Some(moments) => {
+                    whole.add(moments);
+                    sums.counts.full += node.count as usize;
+                }
+                None => {
+                    for i in self.hierarchy.triangles(index) {
+                        triangle(&mut sums, i);
                     }
                 }
-            }
+            },
             Visit::Triangles(triangles) => {
                 for i in triangles {
                     triangle(&mut sums, i);
