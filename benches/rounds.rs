@@ -3,7 +3,10 @@
 //! Each figure is the fastest of 15 rounds of the paper's 100 poses, in µs per evaluation; the
 //! minimum is the figure least disturbed by other work on a shared machine.
 //!
-//! `cargo bench --bench rounds [-- large]`
+//! `cargo bench --bench rounds [-- large] [MODEL…] [METHOD…]`: naming models (`armadillo`) or
+//! methods (`exact`, as in [`Method::name`]) or a traversal (`scan`, `hierarchy`) keeps only those (a model is kept when its
+//! name contains a given word), for profiling one case; `BUOYANCY_ROUNDS=N` takes the best of N
+//! rounds instead of 15.
 
 mod common;
 
@@ -13,15 +16,31 @@ use std::time::Instant;
 use buoyancy::{Method, Traversal};
 
 fn main() {
-    let large = std::env::args().any(|a| a == "large");
+    let args: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with('-')).collect();
+    let large = args.iter().any(|a| a == "large");
+    let methods: Vec<Method> = Method::ALL.into_iter().filter(|m| args.iter().any(|a| a == m.name())).collect();
+    let methods = if methods.is_empty() { Method::ALL.to_vec() } else { methods };
+    let only = |t: Traversal| args.iter().any(|a| a == t.name());
+    let traversals: Vec<Traversal> = match (only(Traversal::Scan), only(Traversal::Hierarchy)) {
+        (true, false) => vec![Traversal::Scan],
+        (false, true) => vec![Traversal::Hierarchy],
+        _ => vec![Traversal::Scan, Traversal::Hierarchy],
+    };
+    let keyword = |a: &str| a == "large" || a == "scan" || a == "hierarchy" || Method::ALL.iter().any(|m| m.name() == a);
+    let names: Vec<&String> = args.iter().filter(|a| !keyword(a)).collect();
+    let models: Vec<_> = common::models::<f64>(large)
+        .into_iter()
+        .filter(|m| names.is_empty() || names.iter().any(|n| m.name.contains(n.as_str())))
+        .collect();
     let water = common::water::<f64>();
+    let rounds: usize = std::env::var("BUOYANCY_ROUNDS").ok().and_then(|r| r.parse().ok()).unwrap_or(15);
     println!("| model | method | scan µs | hierarchy µs |");
     println!("|---|---|---|---|");
-    for model in common::models::<f64>(large) {
+    for model in &models {
         let poses = common::poses(&model.mesh);
-        for method in Method::ALL {
-            let [scan, hierarchy] = [Traversal::Scan, Traversal::Hierarchy].map(|traversal| {
-                (0..15)
+        for &method in &methods {
+            let time = |traversal: Traversal| {
+                (0..rounds)
                     .map(|_| {
                         let started = Instant::now();
                         for pose in &poses {
@@ -30,8 +49,10 @@ fn main() {
                         started.elapsed().as_secs_f64() * 1e6 / poses.len() as f64
                     })
                     .fold(f64::INFINITY, f64::min)
-            });
-            println!("| {} | {} | {scan:.2} | {hierarchy:.2} |", model.name, method.name());
+            };
+            let [scan, hierarchy] = [Traversal::Scan, Traversal::Hierarchy]
+                .map(|t| if traversals.contains(&t) { format!("{:.2}", time(t)) } else { "–".into() });
+            println!("| {} | {} | {scan} | {hierarchy} |", model.name, method.name());
         }
     }
 }

@@ -42,12 +42,17 @@ use crate::{Error, Real};
 /// ```
 #[derive(Debug, Clone)]
 pub struct Mesh<T: Real> {
-    /// Vertex positions relative to `centroid`, mesh frame.
+    /// Vertex positions relative to `centroid`, mesh frame, numbered in the order the leaf-order
+    /// triangles first use them (unused vertices last), so that a leaf's vertices lie close
+    /// together in memory.
     pub(crate) vertices: Vec<Vector3<T>>,
+    /// For each input vertex, its position in `vertices`.
+    vertex_slots: Vec<u32>,
     /// Outward-oriented triangles (counter-clockwise seen from outside), in the input order.
     pub(crate) triangles: Vec<[u32; 3]>,
     /// The same triangles in the hierarchy's leaf order, so that a leaf's triangles and their
-    /// precomputed sums are contiguous. The per-triangle arrays below follow this order.
+    /// precomputed sums are contiguous, with indices into `vertices`. The per-triangle arrays
+    /// below follow this order.
     pub(crate) leaf_triangles: Vec<[u32; 3]>,
     /// Centroid of the enclosed volume, mesh frame.
     pub(crate) centroid: Point3<T>,
@@ -156,10 +161,30 @@ impl<T: Real> Mesh<T> {
         let bounding_radius = relative.iter().map(|v| v.norm()).fold(0.0, f64::max);
         let vertices: Vec<Vector3<T>> = relative.iter().map(|v| v.map(T::lit)).collect();
         let (hierarchy, order) = Hierarchy::build(&vertices, &triangles, &volume6, &moment24);
-        let leaf_triangles: Vec<[u32; 3]> = order.iter().map(|&i| triangles[i as usize]).collect();
+        // Vertices renumbered by first use in leaf order.
+        let mut vertex_slots = alloc::vec![u32::MAX; vertices.len()];
+        let mut renumbered = Vec::with_capacity(vertices.len());
+        for &i in &order {
+            for &k in &triangles[i as usize] {
+                if vertex_slots[k as usize] == u32::MAX {
+                    vertex_slots[k as usize] = renumbered.len() as u32;
+                    renumbered.push(vertices[k as usize]);
+                }
+            }
+        }
+        for (k, slot) in vertex_slots.iter_mut().enumerate() {
+            if *slot == u32::MAX {
+                *slot = renumbered.len() as u32;
+                renumbered.push(vertices[k]);
+            }
+        }
+        let vertices = renumbered;
+        let leaf_triangles: Vec<[u32; 3]> =
+            order.iter().map(|&i| triangles[i as usize].map(|k| vertex_slots[k as usize])).collect();
         let surface_moments = NodeMoments::build(&hierarchy, |i| leaf_triangles[i].map(|k| vertices[k as usize]));
         Ok(Mesh {
             vertices,
+            vertex_slots,
             leaf_triangles,
             surface_moments,
             tetra_volume6: order.iter().map(|&i| T::lit(volume6[i as usize])).collect(),
@@ -197,7 +222,7 @@ impl<T: Real> Mesh<T> {
 
     /// Position of vertex `i`, mesh frame. Panics if `i >= vertex_count()`.
     pub fn vertex(&self, i: usize) -> Point3<T> {
-        self.centroid + self.vertices[i]
+        self.centroid + self.vertices[self.vertex_slots[i] as usize]
     }
 
     /// The triangles, oriented outward (flipped from the input if [`Mesh::was_reoriented`]).
@@ -326,6 +351,30 @@ mod tests {
         assert_eq!((m.vertex_count(), m.triangle_count()), (4, 4));
         let sum: f64 = m.tetra_volume6.iter().sum();
         assert!((sum / 6.0 - m.volume()).abs() < 1e-15);
+    }
+
+    #[test]
+    fn vertices_keep_their_input_numbers() {
+        // Vertex 0 unused, the others listed out of the order the triangles use them.
+        let (mut v, t) = tetrahedron();
+        v.insert(0, Point3::new(5.0, 6.0, 7.0));
+        v.swap(1, 4);
+        let t: Vec<[u32; 3]> = t.iter().map(|t| t.map(|k| [4, 2, 3, 1][k as usize])).collect();
+        let m = Mesh::new(v.clone(), t.clone()).unwrap();
+        assert_eq!(m.vertex_count(), 5);
+        assert_eq!(m.triangles(), &t[..]);
+        for (i, p) in v.iter().enumerate() {
+            assert!((m.vertex(i) - p).norm() < 1e-15, "vertex {i}");
+        }
+        // The internal numbering follows first use in leaf order, the unused vertex last.
+        assert_eq!(m.leaf_triangles[0], [0, 1, 2]);
+        assert_eq!(m.vertex_slots[0], 4);
+        // Every leaf-order triangle is an input triangle, corners in the same order.
+        for leaf in &m.leaf_triangles {
+            let corners = leaf.map(|k| m.centroid + m.vertices[k as usize]);
+            let same = |t: &[u32; 3]| (0..3).all(|j| (v[t[j] as usize] - corners[j]).norm() < 1e-15);
+            assert!(t.iter().any(same), "{leaf:?}");
+        }
     }
 
     #[test]
