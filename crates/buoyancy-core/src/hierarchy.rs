@@ -4,10 +4,13 @@
 //! # What a node stores
 //! For the triangles `i` under a node, in the mesh frame relative to the mesh centroid `c`:
 //!
-//! * the axis-aligned box of their vertices, as center `m` and half extents `e`;
-//! * `Σ detᵢ` and `Σ detᵢ·(aᵢ + bᵢ + cᵢ)`, `detᵢ = aᵢ·(bᵢ×cᵢ)`: six times the volume and
-//!   twenty-four times the first moment about `c` of the tetrahedra from `c` to the triangles,
-//!   the sums the `Fast` method adds over the fully submerged triangles.
+//! * the axis-aligned box of their vertices, corners `lo` and `hi`, in `f32` rounded outward
+//!   (so the stored box holds the exact one whatever `T` is, in 24 bytes), with the triangle
+//!   count and a link: 32 bytes, two nodes to a cache line, all the walk reads;
+//! * beside the nodes, in [`Hierarchy::sums`], `Σ detᵢ` and `Σ detᵢ·(aᵢ + bᵢ + cᵢ)`,
+//!   `detᵢ = aᵢ·(bᵢ×cᵢ)`: six times the volume and twenty-four times the first moment about `c`
+//!   of the tetrahedra from `c` to the triangles, the sums the `Fast` method adds over the fully
+//!   submerged triangles.
 //!
 //! Sums are accumulated in `f64` at build time and taken about the centroid, so that a mesh far
 //! from its own origin does not lose digits.
@@ -17,13 +20,16 @@
 //!
 //! # Query
 //! With `n` the up normal and `h_c` the centroid's height (both in the mesh frame), the heights
-//! of the points of a node's box lie in `n·m + h_c ± |n|·e` (`|n|` taken component-wise). A node
-//! whose interval lies below zero by more than the round-off margin has every triangle fully
-//! submerged, with no vertex in the surface, and contributes its stored sums; one above zero
-//! contributes nothing; any other is opened, down to the leaves, whose triangles go through the
-//! same per-triangle code as the scan. The classification of every triangle is therefore the
-//! scan's own, and the result equals the scan's up to the order of summation. The cost follows
-//! the number of nodes the plane crosses, about the waterline triangles times the depth.
+//! of the points of a node's box lie in `[Σₖ min(nₖloₖ, nₖhiₖ) + h_c, Σₖ max(nₖloₖ, nₖhiₖ) + h_c]`.
+//! Computed in `T`, either end is within `4ε·(M + |h_c|)` of its exact value, and so is every
+//! vertex height the scan computes, with `M = Σₖ max(|loₖ|, |hiₖ|)` over the root's box (a bound
+//! for every node). A node whose interval lies below zero by more than the margin
+//! `8ε·(M + |h_c|)` has every triangle fully submerged, with no vertex in the surface, and
+//! contributes its stored sums; one above zero by the margin contributes nothing; any other is
+//! opened, down to the leaves, whose triangles go through the same per-triangle code as the scan.
+//! The classification of every triangle is therefore the scan's own, and the result equals the
+//! scan's up to the order of summation. The cost follows the number of nodes the plane crosses,
+//! about the waterline triangles times the depth.
 
 use alloc::vec::Vec;
 
@@ -31,38 +37,52 @@ use nalgebra::Vector3;
 
 use crate::Real;
 
-/// Most triangles in a leaf.
-const LEAF_SIZE: usize = 4;
+/// Most triangles in a leaf: a node with more triangles is an inner node.
+const LEAF_SIZE: u32 = 4;
 
-/// A node of the hierarchy (see the module documentation).
-#[derive(Debug, Clone)]
-pub(crate) struct Node<T: Real> {
-    /// Center and half extents of the box of the node's vertices.
-    pub center: Vector3<T>,
-    pub half: Vector3<T>,
-    /// `Σₖ |centerₖ| + halfₖ`: the size of the numbers in the node test, for its round-off margin.
-    pub magnitude: T,
-    pub volume6: T,
-    pub moment24: Vector3<T>,
-    /// Number of triangles under the node.
+/// A node of the hierarchy (see the module documentation): what the walk reads.
+#[derive(Debug, Clone, Copy)]
+#[repr(C, align(32))]
+pub(crate) struct Node {
+    /// `[lo.x, lo.y, lo.z, hi.x, hi.y, hi.z]`, the box of the node's vertices rounded outward.
+    pub bounds: [f32; 6],
+    /// Number of triangles under the node; at most [`LEAF_SIZE`] for a leaf.
     pub count: u32,
     /// Leaf: the position of its first triangle in leaf order. Inner node: the index of its right
     /// child (the left child follows the node directly).
     pub link: u32,
-    pub leaf: bool,
+}
+
+impl Node {
+    #[inline(always)]
+    fn is_leaf(&self) -> bool {
+        self.count <= LEAF_SIZE
+    }
+}
+
+/// The `Fast` method's sums over a node's triangles, about the centroid, mesh frame.
+#[derive(Debug, Clone)]
+pub(crate) struct NodeSums<T: Real> {
+    pub volume6: T,
+    pub moment24: Vector3<T>,
 }
 
 /// The hierarchy: nodes in depth-first order, root first. The triangles are numbered in leaf
 /// order (see [`Hierarchy::build`]), so a leaf's triangles are a range.
 #[derive(Debug, Clone)]
 pub(crate) struct Hierarchy<T: Real> {
-    pub nodes: Vec<Node<T>>,
+    pub nodes: Vec<Node>,
+    /// Per node, its triangles' volume sums.
+    pub sums: Vec<NodeSums<T>>,
+    /// `Σₖ max(|loₖ|, |hiₖ|)` of the root's box: bounds the size of the numbers in every node
+    /// test and vertex height, for the round-off margin.
+    magnitude: T,
 }
 
 /// What the walk found: a node entirely under water, or a leaf's triangles to examine one by one.
-pub(crate) enum Visit<'a, T: Real> {
-    /// The node at this index, entirely under water.
-    Submerged(usize, &'a Node<T>),
+pub(crate) enum Visit {
+    /// The node at this index, entirely under water, and its number of triangles.
+    Submerged(usize, u32),
     Triangles(core::ops::Range<usize>),
 }
 
@@ -84,10 +104,18 @@ impl<T: Real> Hierarchy<T> {
             .iter()
             .map(|t| t.iter().map(|&k| vertices[k as usize].map(T::to_f64)).sum::<Vector3<f64>>() / 3.0)
             .collect();
-        let mut nodes = Vec::with_capacity(2 * triangles.len() / LEAF_SIZE + 1);
+        let capacity = 2 * triangles.len() / LEAF_SIZE as usize + 1;
+        let mut hierarchy = Hierarchy {
+            nodes: Vec::with_capacity(capacity),
+            sums: Vec::with_capacity(capacity),
+            magnitude: T::zero(),
+        };
         let builder = Builder { vertices, triangles, volume6, moment24, centers: &centers };
-        builder.node(&mut nodes, &mut order, 0);
-        (Hierarchy { nodes }, order)
+        builder.node(&mut hierarchy, &mut order, 0);
+        let b = &hierarchy.nodes[0].bounds;
+        let magnitude: f64 = (0..3).map(|k| f64::from(b[k].abs().max(b[k + 3].abs()))).sum();
+        hierarchy.magnitude = T::lit(magnitude);
+        (hierarchy, order)
     }
 
     /// Calls `visit` for every node entirely under water and every leaf the surface may cross,
@@ -95,23 +123,31 @@ impl<T: Real> Hierarchy<T> {
     /// No allocation: the pending nodes are kept on a fixed stack (the depth is at most
     /// log₂ of the triangle count, below 64).
     #[inline]
-    pub fn walk(&self, normal: &Vector3<T>, height: T, mut visit: impl FnMut(Visit<'_, T>)) {
-        let eight_eps = T::default_epsilon() * T::lit(8.0);
+    pub fn walk(&self, normal: &Vector3<T>, height: T, mut visit: impl FnMut(Visit)) {
+        let margin = T::default_epsilon() * T::lit(8.0) * (self.magnitude + height.abs());
+        let n = [normal.x, normal.y, normal.z];
+        // Per axis, the box's lower (`near`) and upper (`far`) end along the normal.
+        let near: [usize; 3] = core::array::from_fn(|k| if n[k] >= T::zero() { k } else { k + 3 });
+        let far = near.map(|k| (k + 3) % 6);
         let mut stack = [0u32; 64];
         let mut top = 1;
         while top > 0 {
             top -= 1;
             let index = stack[top];
             let node = &self.nodes[index as usize];
-            let middle = normal.dot(&node.center) + height;
-            let radius = normal.abs().dot(&node.half);
-            let margin = eight_eps * (node.magnitude + height.abs());
-            let (low, high) = (middle - radius, middle + radius);
+            let b = &node.bounds;
+            let at = |corner: &[usize; 3]| {
+                n[0] * T::from_f32_exact(b[corner[0]])
+                    + n[1] * T::from_f32_exact(b[corner[1]])
+                    + n[2] * T::from_f32_exact(b[corner[2]])
+                    + height
+            };
+            let (low, high) = (at(&near), at(&far));
             if high + margin < T::zero() {
-                visit(Visit::Submerged(index as usize, node));
+                visit(Visit::Submerged(index as usize, node.count));
             } else if low - margin > T::zero() {
                 // Dry.
-            } else if node.leaf {
+            } else if node.is_leaf() {
                 let first = node.link as usize;
                 visit(Visit::Triangles(first..first + node.count as usize));
             } else {
@@ -126,19 +162,29 @@ impl<T: Real> Hierarchy<T> {
     /// The children of node `index`, `None` for a leaf.
     pub fn children(&self, index: usize) -> Option<(usize, usize)> {
         let node = &self.nodes[index];
-        (!node.leaf).then(|| (index + 1, node.link as usize))
+        (!node.is_leaf()).then(|| (index + 1, node.link as usize))
     }
 
     /// The triangles (in leaf order) of leaf `index`.
     pub fn triangles(&self, index: usize) -> core::ops::Range<usize> {
         let node = &self.nodes[index];
-        debug_assert!(node.leaf);
+        debug_assert!(node.is_leaf());
         node.link as usize..(node.link + node.count) as usize
     }
 
     /// Bytes of memory the hierarchy uses.
     pub fn memory(&self) -> usize {
-        self.nodes.len() * core::mem::size_of::<Node<T>>()
+        self.nodes.len() * (core::mem::size_of::<Node>() + core::mem::size_of::<NodeSums<T>>())
+    }
+}
+
+/// `x` rounded to an `f32` no greater (`down`) or no less than it.
+fn to_f32_outward(x: f64, down: bool) -> f32 {
+    let y = x as f32;
+    match (down, f64::from(y).partial_cmp(&x)) {
+        (true, Some(core::cmp::Ordering::Greater)) => y.next_down(),
+        (false, Some(core::cmp::Ordering::Less)) => y.next_up(),
+        _ => y,
     }
 }
 
@@ -152,35 +198,28 @@ struct Builder<'a, T: Real> {
 
 impl<T: Real> Builder<'_, T> {
     /// Appends the node of the triangles `order` (which start at slot `first`) and its subtree.
-    fn node(&self, nodes: &mut Vec<Node<T>>, order: &mut [u32], first: usize) {
-        let mut lo = self.vertices[self.triangles[order[0] as usize][0] as usize];
+    fn node(&self, hierarchy: &mut Hierarchy<T>, order: &mut [u32], first: usize) {
+        let mut lo = self.vertices[self.triangles[order[0] as usize][0] as usize].map(T::to_f64);
         let mut hi = lo;
         let (mut volume6, mut moment24) = (0.0, Vector3::zeros());
         for &i in order.iter() {
             for &k in &self.triangles[i as usize] {
-                let v = &self.vertices[k as usize];
-                lo = lo.inf(v);
-                hi = hi.sup(v);
+                let v = self.vertices[k as usize].map(T::to_f64);
+                lo = lo.inf(&v);
+                hi = hi.sup(&v);
             }
             volume6 += self.volume6[i as usize];
             moment24 += self.moment24[i as usize];
         }
-        let index = nodes.len();
-        // Computed in f64 and widened by the round-off margin of the walk; the margin also
-        // covers rounding these to `T`.
-        let (lo, hi) = (lo.map(T::to_f64), hi.map(T::to_f64));
-        let (center, half) = ((lo + hi) / 2.0, (hi - lo) / 2.0);
-        nodes.push(Node {
-            center: center.map(T::lit),
-            half: half.map(T::lit),
-            magnitude: T::lit(center.abs().sum() + half.sum()),
-            volume6: T::lit(volume6),
-            moment24: moment24.map(T::lit),
+        let index = hierarchy.nodes.len();
+        let bounds = [lo.x, lo.y, lo.z, hi.x, hi.y, hi.z];
+        hierarchy.nodes.push(Node {
+            bounds: core::array::from_fn(|k| to_f32_outward(bounds[k], k < 3)),
             count: order.len() as u32,
             link: first as u32,
-            leaf: order.len() <= LEAF_SIZE,
         });
-        if order.len() <= LEAF_SIZE {
+        hierarchy.sums.push(NodeSums { volume6: T::lit(volume6), moment24: moment24.map(T::lit) });
+        if hierarchy.nodes[index].is_leaf() {
             return;
         }
         let (c_lo, c_hi) = order.iter().fold(
@@ -193,8 +232,22 @@ impl<T: Real> Builder<'_, T> {
             self.centers[a as usize][axis].total_cmp(&self.centers[b as usize][axis])
         });
         let (left, right) = order.split_at_mut(mid);
-        self.node(nodes, left, first);
-        nodes[index].link = nodes.len() as u32;
-        self.node(nodes, right, first + mid);
+        self.node(hierarchy, left, first);
+        hierarchy.nodes[index].link = hierarchy.nodes.len() as u32;
+        self.node(hierarchy, right, first + mid);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn boxes_round_outward() {
+        for x in [0.1, -0.1, 1.0 / 3.0, -2.0 / 3.0, 1e-30, 12345.678_9, 0.5, 0.0] {
+            let (down, up) = (to_f32_outward(x, true), to_f32_outward(x, false));
+            assert!(f64::from(down) <= x && x <= f64::from(up), "{x}");
+            assert!(up == down || up == down.next_up(), "{x}: {down} {up}");
+        }
     }
 }

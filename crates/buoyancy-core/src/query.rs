@@ -391,11 +391,11 @@ impl<T: Real> Mesh<T> {
         }
         let mut sums = S::zero();
         self.hierarchy.walk(&frame.normal_local, frame.height, |visit| match visit {
-            Visit::Submerged(_, node) => {
-                let s = sums.exact_mut();
+            Visit::Submerged(index, count) => {
+                let (s, node) = (sums.exact_mut(), &self.hierarchy.sums[index]);
                 s.volume6 += node.volume6;
                 s.moment24 += node.moment24;
-                s.counts.full += node.count as usize;
+                s.counts.full += count as usize;
             }
             Visit::Triangles(triangles) => {
                 for i in triangles {
@@ -415,10 +415,10 @@ impl<T: Real> Mesh<T> {
         let mut sums = SurfaceSums::zero();
         let mut whole = SurfaceMoments::zero();
         self.hierarchy.walk(n, frame.height, |visit| match visit {
-            Visit::Submerged(index, node) => match self.surface_moments.get(index) {
+            Visit::Submerged(index, count) => match self.surface_moments.get(index) {
                 Some(moments) => {
                     whole.add(moments);
-                    sums.counts.full += node.count as usize;
+                    sums.counts.full += count as usize;
                 }
                 None => {
                     for i in self.hierarchy.triangles(index) {

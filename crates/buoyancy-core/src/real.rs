@@ -9,6 +9,8 @@ pub trait Real: RealField + Copy + Send + Sync + 'static {
     fn lit(x: f64) -> Self;
     /// Converts to `f64` (exact for both implementors).
     fn to_f64(self) -> f64;
+    /// Converts from `f32` (exact for both implementors).
+    fn from_f32_exact(x: f32) -> Self;
 }
 
 impl Real for f32 {
@@ -20,6 +22,10 @@ impl Real for f32 {
     fn to_f64(self) -> f64 {
         self as f64
     }
+    #[inline(always)]
+    fn from_f32_exact(x: f32) -> Self {
+        x
+    }
 }
 
 impl Real for f64 {
@@ -30,5 +36,9 @@ impl Real for f64 {
     #[inline(always)]
     fn to_f64(self) -> f64 {
         self
+    }
+    #[inline(always)]
+    fn from_f32_exact(x: f32) -> Self {
+        x as f64
     }
 }
