@@ -1,5 +1,7 @@
-//! Best-of-15 timings for A/B comparisons: every method on the paper's models (and, with
-//! `-- large`, the 10⁶-triangle torus knot), by the scan and by the hierarchy, f64, one thread.
+//! Best-of-15 timings for A/B comparisons: every method on the paper's models, the peers'
+//! 30,000-triangle torus (`benches/peers.py`) and, with `-- large`, the 10⁶-triangle torus knot,
+//! by the scan and by the hierarchy, f64, one thread. The last column is the mean number of
+//! triangles the surface cuts per pose, what the hierarchy's cost follows.
 //! Each figure is the fastest of 15 rounds of the paper's 100 poses, in µs per evaluation; the
 //! minimum is the figure least disturbed by other work on a shared machine.
 //!
@@ -28,14 +30,18 @@ fn main() {
     };
     let keyword = |a: &str| a == "large" || a == "scan" || a == "hierarchy" || Method::ALL.iter().any(|m| m.name() == a);
     let names: Vec<&String> = args.iter().filter(|a| !keyword(a)).collect();
-    let models: Vec<_> = common::models::<f64>(large)
+    let mut models = common::models::<f64>(large);
+    let (v, t) = buoyancy::shape::torus(1.0, 0.25, 200, 75);
+    let torus = buoyancy::Mesh::new(v, t).expect("valid mesh");
+    models.insert(models.len() - usize::from(large), common::Model { name: "torus 30000".into(), paper_ms: None, mesh: torus });
+    let models: Vec<_> = models
         .into_iter()
         .filter(|m| names.is_empty() || names.iter().any(|n| m.name.contains(n.as_str())))
         .collect();
     let water = common::water::<f64>();
     let rounds: usize = std::env::var("BUOYANCY_ROUNDS").ok().and_then(|r| r.parse().ok()).unwrap_or(15);
-    println!("| model | method | scan µs | hierarchy µs |");
-    println!("|---|---|---|---|");
+    println!("| model | method | scan µs | hierarchy µs | cut triangles |");
+    println!("|---|---|---|---|---|");
     for model in &models {
         let poses = common::poses(&model.mesh);
         for &method in &methods {
@@ -52,7 +58,12 @@ fn main() {
             };
             let [scan, hierarchy] = [Traversal::Scan, Traversal::Hierarchy]
                 .map(|t| if traversals.contains(&t) { format!("{:.2}", time(t)) } else { "–".into() });
-            println!("| {} | {} | {scan} | {hierarchy} |", model.name, method.name());
+            let cut = poses
+                .iter()
+                .map(|pose| model.mesh.buoyancy(pose, &water, method).unwrap().partially_submerged)
+                .sum::<usize>() as f64
+                / poses.len() as f64;
+            println!("| {} | {} | {scan} | {hierarchy} | {cut:.0} |", model.name, method.name());
         }
     }
 }
