@@ -38,7 +38,7 @@ use nalgebra::Vector3;
 use crate::Real;
 
 /// Most triangles in a leaf: a node with more triangles is an inner node.
-const LEAF_SIZE: u32 = 4;
+const LEAF_SIZE: u32 = 8;
 
 /// A node of the hierarchy (see the module documentation): what the walk reads.
 #[derive(Debug, Clone, Copy)]
