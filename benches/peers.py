@@ -3,10 +3,10 @@
 A benchmark script, not a test. From the repository root:
 
     python3 -m venv .venv-peers
-    .venv-peers/bin/pip install . numpy trimesh scipy shapely rtree mapbox-earcut navaltoolbox
+    .venv-peers/bin/pip install . numpy trimesh scipy shapely rtree mapbox-earcut networkx navaltoolbox
     .venv-peers/bin/python benches/peers.py            # [--budget 2.0] [--out benches/PEERS.md]
 
-(trimesh's ``slice_plane(cap=True)`` needs scipy, shapely, rtree and mapbox-earcut besides
+(trimesh's ``slice_plane(cap=True)`` needs scipy, shapely, rtree, mapbox-earcut and networkx besides
 trimesh itself.) Every peer is optional: one that is not installed is skipped with a message.
 
 On the same meshes and the same poses, for each implementation: the median time per evaluation
@@ -409,7 +409,7 @@ def machine() -> list[str]:
         pass
     usable = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
     versions = []
-    for pkg in ("buoyancy", "numpy", "trimesh", "scipy", "shapely", "rtree", "mapbox-earcut", "navaltoolbox"):
+    for pkg in ("buoyancy", "numpy", "trimesh", "scipy", "shapely", "rtree", "mapbox-earcut", "networkx", "navaltoolbox"):
         try:
             versions.append(f"{pkg} {importlib.metadata.version(pkg)}")
         except importlib.metadata.PackageNotFoundError:
