@@ -1,12 +1,14 @@
 //! Best-of-15 timings for A/B comparisons: every method on the paper's models, the peers'
 //! 30,000-triangle torus (`benches/peers.py`) and, with `-- large`, the 10⁶-triangle torus knot,
 //! by the scan and by the hierarchy, f64, one thread. The last column is the mean number of
-//! triangles the surface cuts per pose, what the hierarchy's cost follows.
+//! triangles the surface cuts per pose, what the hierarchy's cost follows. A last row per model
+//! times `Mesh::damping` (which scans) at the same poses, the body moving at 1 m/s down and
+//! sideways and turning at 1 rad/s.
 //! Each figure is the fastest of 15 rounds of the paper's 100 poses, in µs per evaluation; the
 //! minimum is the figure least disturbed by other work on a shared machine.
 //!
 //! `cargo bench --bench rounds [-- large] [MODEL…] [METHOD…]`: naming models (`armadillo`) or
-//! methods (`exact`, as in [`Method::name`]) or a traversal (`scan`, `hierarchy`) keeps only those (a model is kept when its
+//! methods (`exact`, as in [`Method::name`], or `damping`) or a traversal (`scan`, `hierarchy`) keeps only those (a model is kept when its
 //! name contains a given word), for profiling one case; `BUOYANCY_ROUNDS=N` takes the best of N
 //! rounds instead of 15.
 
@@ -15,20 +17,27 @@ mod common;
 use std::hint::black_box;
 use std::time::Instant;
 
-use buoyancy::{Method, Traversal};
+use buoyancy::nalgebra::Vector3;
+use buoyancy::{DampingCoefficients, Method, Traversal};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with('-')).collect();
     let large = args.iter().any(|a| a == "large");
     let methods: Vec<Method> = Method::ALL.into_iter().filter(|m| args.iter().any(|a| a == m.name())).collect();
-    let methods = if methods.is_empty() { Method::ALL.to_vec() } else { methods };
+    let named_damping = args.iter().any(|a| a == "damping");
+    // The damping row when asked for, or when no method or traversal is named.
+    let damping = named_damping || (methods.is_empty() && !args.iter().any(|a| a == "scan" || a == "hierarchy"));
+    let methods = match (methods.is_empty(), named_damping) {
+        (true, false) => Method::ALL.to_vec(),
+        _ => methods,
+    };
     let only = |t: Traversal| args.iter().any(|a| a == t.name());
     let traversals: Vec<Traversal> = match (only(Traversal::Scan), only(Traversal::Hierarchy)) {
         (true, false) => vec![Traversal::Scan],
         (false, true) => vec![Traversal::Hierarchy],
         _ => vec![Traversal::Scan, Traversal::Hierarchy],
     };
-    let keyword = |a: &str| a == "large" || a == "scan" || a == "hierarchy" || Method::ALL.iter().any(|m| m.name() == a);
+    let keyword = |a: &str| a == "large" || a == "damping" || a == "scan" || a == "hierarchy" || Method::ALL.iter().any(|m| m.name() == a);
     let names: Vec<&String> = args.iter().filter(|a| !keyword(a)).collect();
     let mut models = common::models::<f64>(large);
     let (v, t) = buoyancy::shape::torus(1.0, 0.25, 200, 75);
@@ -64,6 +73,26 @@ fn main() {
                 .sum::<usize>() as f64
                 / poses.len() as f64;
             println!("| {} | {} | {scan} | {hierarchy} | {cut:.0} |", model.name, method.name());
+        }
+        if damping {
+            let (velocity, omega) = (Vector3::new(1.0, -1.0, 0.0), Vector3::new(0.3, 0.5, 0.8).normalize());
+            let coefficients = DampingCoefficients::default();
+            let time = (0..rounds)
+                .map(|_| {
+                    let started = Instant::now();
+                    for pose in &poses {
+                        black_box(model.mesh.damping(black_box(pose), &velocity, &omega, &water, &coefficients).unwrap());
+                    }
+                    started.elapsed().as_secs_f64() * 1e6 / poses.len() as f64
+                })
+                .fold(f64::INFINITY, f64::min);
+            let wetted = poses
+                .iter()
+                .map(|pose| model.mesh.damping(pose, &velocity, &omega, &water, &coefficients).unwrap().wetted_fraction)
+                .sum::<f64>()
+                / poses.len() as f64
+                * model.mesh.triangle_count() as f64;
+            println!("| {} | damping | {time:.2} | – | {wetted:.0} wetted (area-weighted) |", model.name);
         }
     }
 }
