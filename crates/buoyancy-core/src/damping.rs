@@ -166,12 +166,75 @@ impl<T: Real> Damping<T> {
     }
 }
 
-/// Running sums of the pressure drag, mesh frame, about the centroid.
-struct DragSums<T: Real> {
+/// The pressure drag of the model, summed over wetted triangles: the body's velocity and the
+/// coefficients, and the running sums, all in the mesh frame, about the centroid.
+struct Drag<T: Real> {
+    /// Velocity of the centroid relative to the water, and angular velocity.
+    velocity: Vector3<T>,
+    omega: Vector3<T>,
+    /// `c₁` and `½·ρ·C_D`.
+    linear: T,
+    quadratic: T,
     force: Vector3<T>,
     torque: Vector3<T>,
     /// Twice the wetted area.
     area2: T,
+}
+
+impl<T: Real> Drag<T> {
+    /// Adds the wetted triangle `p` (corners relative to the centroid): its area, and the drag
+    /// on the part of it facing the flow.
+    #[inline(always)]
+    fn wetted(&mut self, p: [Vector3<T>; 3]) {
+        let zero = T::zero();
+        let area2 = (p[1] - p[0]).cross(&(p[2] - p[0]));
+        let norm2 = area2.norm();
+        if norm2 <= zero {
+            return;
+        }
+        self.area2 += norm2;
+        let normal = area2 / norm2;
+        // u_n(p) = n̂·(v + ω × p) = n̂·v + (n̂ × ω)·p.
+        let (base, slope) = (normal.dot(&self.velocity), normal.cross(&self.omega));
+        let un = [base + slope.dot(&p[0]), base + slope.dot(&p[1]), base + slope.dot(&p[2])];
+        if un[0] <= zero && un[1] <= zero && un[2] <= zero {
+            return;
+        }
+        let half = T::lit(0.5);
+        if un[0] >= zero && un[1] >= zero && un[2] >= zero {
+            self.facing(p, un, &normal, norm2 * half);
+        } else {
+            // Keep the part where u_n > 0: "under" the level set −u_n = 0.
+            clip_below(p, [-un[0], -un[1], -un[2]], |q, minus_u| {
+                // The piece lies in the triangle's plane: its area is along `normal`.
+                let area = normal.dot(&(q[1] - q[0]).cross(&(q[2] - q[0]))) * half;
+                self.facing(q, [-minus_u[0], -minus_u[1], -minus_u[2]], &normal, area);
+            });
+        }
+    }
+
+    /// Adds the drag on a flat piece `q` of unit normal `normal` and area `area` where the
+    /// normal velocity, `u` at the corners, is non-negative.
+    #[inline(always)]
+    fn facing(&mut self, q: [Vector3<T>; 3], u: [T; 3], normal: &Vector3<T>, area: T) {
+        let (third, twelfth, sixtieth) = (T::lit(1.0 / 3.0), T::lit(1.0 / 12.0), T::lit(1.0 / 60.0));
+        let sum_u = u[0] + u[1] + u[2];
+        let sum_u2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+        let sum_q = q[0] + q[1] + q[2];
+        let sum_uq = q[0] * u[0] + q[1] * u[1] + q[2] * u[2];
+        let sum_u2q = q[0] * (u[0] * u[0]) + q[1] * (u[1] * u[1]) + q[2] * (u[2] * u[2]);
+        // ∫u, ∫u², ∫u·p, ∫u²·p over the piece.
+        let int_u = area * sum_u * third;
+        let int_u2 = area * (sum_u2 + sum_u * sum_u) * twelfth;
+        let int_uq = (sum_uq + sum_q * sum_u) * (area * twelfth);
+        let int_u2q = (sum_q * (sum_u * sum_u + sum_u2) + sum_uq * (sum_u + sum_u) + sum_u2q * T::lit(2.0))
+            * (area * sixtieth);
+        let pressure = int_u * self.linear + int_u2 * self.quadratic;
+        let moment = int_uq * self.linear + int_u2q * self.quadratic;
+        self.force -= normal * pressure;
+        // −∫ p × P n̂ dA = n̂ × ∫ P p dA
+        self.torque += normal.cross(&moment);
+    }
 }
 
 impl<T: Real> Mesh<T> {
@@ -208,57 +271,15 @@ impl<T: Real> Mesh<T> {
         let velocity = rotation_t * (linear_velocity - coefficients.current);
         let omega = rotation_t * angular_velocity;
         let half = T::lit(0.5);
-        let quadratic = half * water.density() * coefficients.drag_coefficient;
-        let linear = coefficients.linear;
         let zero = T::zero();
-
-        let mut sums = DragSums { force: Vector3::zeros(), torque: Vector3::zeros(), area2: zero };
-        let (third, twelfth, sixtieth) = (T::lit(1.0 / 3.0), T::lit(1.0 / 12.0), T::lit(1.0 / 60.0));
-        // The drag on a flat piece `q` of unit normal `normal` and area `area` where the normal
-        // velocity, `u` at the corners, is non-negative.
-        let mut drag = |q: [Vector3<T>; 3], u: [T; 3], normal: &Vector3<T>, area: T| {
-            let sum_u = u[0] + u[1] + u[2];
-            let sum_u2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
-            let sum_q = q[0] + q[1] + q[2];
-            let sum_uq = q[0] * u[0] + q[1] * u[1] + q[2] * u[2];
-            let sum_u2q = q[0] * (u[0] * u[0]) + q[1] * (u[1] * u[1]) + q[2] * (u[2] * u[2]);
-            // ∫u, ∫u², ∫u·p, ∫u²·p over the piece.
-            let int_u = area * sum_u * third;
-            let int_u2 = area * (sum_u2 + sum_u * sum_u) * twelfth;
-            let int_uq = (sum_uq + sum_q * sum_u) * (area * twelfth);
-            let int_u2q = (sum_q * (sum_u * sum_u + sum_u2) + sum_uq * (sum_u + sum_u) + sum_u2q * T::lit(2.0))
-                * (area * sixtieth);
-            let pressure = int_u * linear + int_u2 * quadratic;
-            let moment = int_uq * linear + int_u2q * quadratic;
-            sums.force -= normal * pressure;
-            // −∫ p × P n̂ dA = n̂ × ∫ P p dA
-            sums.torque += normal.cross(&moment);
-        };
-        let mut add = |p: [Vector3<T>; 3]| {
-            let area2 = (p[1] - p[0]).cross(&(p[2] - p[0]));
-            let norm2 = area2.norm();
-            if norm2 <= zero {
-                return;
-            }
-            sums.area2 += norm2;
-            let normal = area2 / norm2;
-            let un = [
-                normal.dot(&(velocity + omega.cross(&p[0]))),
-                normal.dot(&(velocity + omega.cross(&p[1]))),
-                normal.dot(&(velocity + omega.cross(&p[2]))),
-            ];
-            if un[0] <= zero && un[1] <= zero && un[2] <= zero {
-                return;
-            }
-            if un[0] >= zero && un[1] >= zero && un[2] >= zero {
-                drag(p, un, &normal, norm2 * half);
-            } else {
-                // Keep the part where u_n > 0: "under" the level set −u_n = 0.
-                clip_below(p, [-un[0], -un[1], -un[2]], |q, minus_u| {
-                    let area = (q[1] - q[0]).cross(&(q[2] - q[0])).norm() * half;
-                    drag(q, [-minus_u[0], -minus_u[1], -minus_u[2]], &normal, area);
-                });
-            }
+        let mut drag = Drag {
+            velocity,
+            omega,
+            linear: coefficients.linear,
+            quadratic: half * water.density() * coefficients.drag_coefficient,
+            force: Vector3::zeros(),
+            torque: Vector3::zeros(),
+            area2: zero,
         };
         for i in 0..self.triangles.len() {
             let v = self.corners(i);
@@ -268,11 +289,12 @@ impl<T: Real> Mesh<T> {
                 continue;
             }
             if h[0] <= zero && h[1] <= zero && h[2] <= zero {
-                add(v);
+                drag.wetted(v);
             } else {
-                clip_below(v, h, |p, _| add(p));
+                clip_below(v, h, |p, _| drag.wetted(p));
             }
         }
+        let sums = drag;
 
         let wetted_area = sums.area2 * half;
         let wetted_fraction = if self.surface_area > zero {
