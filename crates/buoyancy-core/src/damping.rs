@@ -47,6 +47,7 @@
 
 use nalgebra::{Point3, Vector3};
 
+use crate::hierarchy::Visit;
 use crate::integrals::clip_below;
 use crate::query::Frame;
 use crate::{Error, Mesh, Pose, Real, Water};
@@ -185,15 +186,12 @@ impl<T: Real> Drag<T> {
     /// Adds the wetted triangle `p` (corners relative to the centroid): its area, and the drag
     /// on the part of it facing the flow.
     #[inline(always)]
-    fn wetted(&mut self, p: [Vector3<T>; 3]) {
+    fn wetted(&mut self, p: [Vector3<T>; 3], normal: &Vector3<T>, norm2: T) {
         let zero = T::zero();
-        let area2 = (p[1] - p[0]).cross(&(p[2] - p[0]));
-        let norm2 = area2.norm();
         if norm2 <= zero {
             return;
         }
         self.area2 += norm2;
-        let normal = area2 / norm2;
         // u_n(p) = n̂·(v + ω × p) = n̂·v + (n̂ × ω)·p.
         let (base, slope) = (normal.dot(&self.velocity), normal.cross(&self.omega));
         let un = [base + slope.dot(&p[0]), base + slope.dot(&p[1]), base + slope.dot(&p[2])];
@@ -202,13 +200,13 @@ impl<T: Real> Drag<T> {
         }
         let half = T::lit(0.5);
         if un[0] >= zero && un[1] >= zero && un[2] >= zero {
-            self.facing(p, un, &normal, norm2 * half);
+            self.facing(p, un, normal, norm2 * half);
         } else {
             // Keep the part where u_n > 0: "under" the level set −u_n = 0.
             clip_below(p, [-un[0], -un[1], -un[2]], |q, minus_u| {
                 // The piece lies in the triangle's plane: its area is along `normal`.
                 let area = normal.dot(&(q[1] - q[0]).cross(&(q[2] - q[0]))) * half;
-                self.facing(q, [-minus_u[0], -minus_u[1], -minus_u[2]], &normal, area);
+                self.facing(q, [-minus_u[0], -minus_u[1], -minus_u[2]], normal, area);
             });
         }
     }
@@ -242,8 +240,9 @@ impl<T: Real> Mesh<T> {
     /// with `linear_velocity` (of its center of mass, world frame, m/s) and `angular_velocity`
     /// (world frame, rad/s), by the model of the [`damping`](crate::damping) module.
     ///
-    /// One pass over the triangles, no allocation. With [`DampingCoefficients::off`] it returns
-    /// zero at once.
+    /// Walks the mesh's hierarchy, so dry parts cost nothing and submerged parts are not
+    /// classified triangle by triangle; every wetted triangle is integrated. No allocation.
+    /// With [`DampingCoefficients::off`] it returns zero at once.
     ///
     /// # Errors
     /// [`Error::InvalidPose`] for a non-finite pose; [`Error::InvalidVelocity`] for a non-finite
@@ -281,19 +280,35 @@ impl<T: Real> Mesh<T> {
             torque: Vector3::zeros(),
             area2: zero,
         };
-        for i in 0..self.triangles.len() {
-            let v = self.corners(i);
-            let h = frame.heights(&v);
-            // A triangle lying in the surface, or touching it from above, is dry.
-            if !(h[0] < zero || h[1] < zero || h[2] < zero) {
-                continue;
+        // The hierarchy skips the dry nodes and hands over the submerged ones whole, so only the
+        // triangles near the waterline are classified; the drag itself is not linear in the
+        // velocity over a node (only the part facing the flow counts), so every wetted triangle
+        // is still integrated.
+        self.hierarchy.walk(&frame.normal_local, frame.height, |visit| match visit {
+            Visit::Submerged(index, _) => {
+                for i in self.hierarchy.range(index) {
+                    let (normal, area2) = &self.normals[i];
+                    drag.wetted(self.corners(i), normal, *area2);
+                }
             }
-            if h[0] <= zero && h[1] <= zero && h[2] <= zero {
-                drag.wetted(v);
-            } else {
-                clip_below(v, h, |p, _| drag.wetted(p));
+            Visit::Triangles(triangles) => {
+                for i in triangles {
+                    let v = self.corners(i);
+                    let h = frame.heights(&v);
+                    // A triangle lying in the surface, or touching it from above, is dry.
+                    if !(h[0] < zero || h[1] < zero || h[2] < zero) {
+                        continue;
+                    }
+                    let (normal, area2) = &self.normals[i];
+                    if h[0] <= zero && h[1] <= zero && h[2] <= zero {
+                        drag.wetted(v, normal, *area2);
+                    } else {
+                        // The pieces lie in the triangle's plane: their area is along its normal.
+                        clip_below(v, h, |p, _| drag.wetted(p, normal, normal.dot(&(p[1] - p[0]).cross(&(p[2] - p[0])))));
+                    }
+                }
             }
-        }
+        });
         let sums = drag;
 
         let wetted_area = sums.area2 * half;

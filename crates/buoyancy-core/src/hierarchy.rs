@@ -172,6 +172,16 @@ impl<T: Real> Hierarchy<T> {
         node.link as usize..(node.link + node.count) as usize
     }
 
+    /// The triangles (in leaf order) under node `index`: its leaves' ranges, which are adjacent.
+    pub fn range(&self, index: usize) -> core::ops::Range<usize> {
+        let mut first = index;
+        while let Some((left, _)) = self.children(first) {
+            first = left;
+        }
+        let start = self.nodes[first].link as usize;
+        start..start + self.nodes[index].count as usize
+    }
+
     /// Bytes of memory the hierarchy uses.
     pub fn memory(&self) -> usize {
         self.nodes.len() * (core::mem::size_of::<Node>() + core::mem::size_of::<NodeSums<T>>())

@@ -20,8 +20,10 @@ use crate::{Error, Real};
 /// * **rejects** everything else with a typed [`Error`] naming the vertex, triangle or edge.
 ///
 /// It precomputes, in `f64` whatever `T` is, the volume, the centroid, the vertices relative to
-/// the centroid, and the per-triangle volume elements the [`Fast`](crate::Method::Fast) method
-/// sums. All of it is in the *mesh frame*.
+/// the centroid, the per-triangle volume elements the [`Fast`](crate::Method::Fast) method
+/// sums, the per-triangle unit normals and areas the [damping](crate::damping) integrates, and
+/// a bounding-volume hierarchy (see [`Traversal`](crate::Traversal)). All of it is in the *mesh
+/// frame*.
 ///
 /// ```
 /// use buoyancy_core::{Error, Mesh};
@@ -67,6 +69,9 @@ pub struct Mesh<T: Real> {
     /// Per triangle `24·V_i·(v_a+v_b+v_c)/4`: twenty-four times that tetrahedron's first
     /// moment about the centroid.
     pub(crate) tetra_moment24: Vec<Vector3<T>>,
+    /// Per triangle (leaf order), its outward unit normal and twice its area; a zero vector and
+    /// zero for a triangle of zero area.
+    pub(crate) normals: Vec<(Vector3<T>, T)>,
     /// Largest distance of a vertex from the centroid.
     pub(crate) bounding_radius: T,
     /// Total surface area, m².
@@ -182,7 +187,18 @@ impl<T: Real> Mesh<T> {
         let leaf_triangles: Vec<[u32; 3]> =
             order.iter().map(|&i| triangles[i as usize].map(|k| vertex_slots[k as usize])).collect();
         let surface_moments = NodeMoments::build(&hierarchy, |i| leaf_triangles[i].map(|k| vertices[k as usize]));
+    let normals = leaf_triangles
+            .iter()
+            .map(|t| {
+                let [a, b, c] = t.map(|k| vertices[k as usize].map(T::to_f64));
+                let area2 = (b - a).cross(&(c - a));
+                let norm2 = area2.norm();
+                let normal = if norm2 > 0.0 { area2 / norm2 } else { Vector3::zeros() };
+                (normal.map(T::lit), T::lit(norm2))
+            })
+            .collect();
         Ok(Mesh {
+            normals,
             vertices,
             vertex_slots,
             leaf_triangles,
