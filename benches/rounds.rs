@@ -40,7 +40,7 @@ fn main() {
     let keyword = |a: &str| a == "large" || a == "damping" || a == "scan" || a == "hierarchy" || Method::ALL.iter().any(|m| m.name() == a);
     let names: Vec<&String> = args.iter().filter(|a| !keyword(a)).collect();
     let mut models = common::models::<f64>(large);
-    let (v, t) = buoyancy::shape::torus(1.0, 0.25, 200, 75);
+    let (v, t) = buoyancy::shape::torus(1.0, 0.25, 200, 75).unwrap();
     let torus = buoyancy::Mesh::new(v, t).expect("valid mesh");
     models.insert(models.len() - usize::from(large), common::Model { name: "torus 30000".into(), paper_ms: None, mesh: torus });
     let models: Vec<_> = models

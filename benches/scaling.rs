@@ -48,7 +48,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     ];
     let mut rows = Vec::new();
     for (segments, sides) in sizes {
-        let (v, t) = shape::torus_knot::<f64>(2, 3, 1.0, 0.25, segments, sides);
+        let (v, t) = shape::torus_knot::<f64>(2, 3, 1.0, 0.25, segments, sides).unwrap();
         let started = Instant::now();
         let mesh = Mesh::new(v, t)?;
         let build_ms = started.elapsed().as_secs_f64() * 1e3;

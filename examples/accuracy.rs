@@ -25,7 +25,7 @@ struct Case {
 fn main() -> Result<(), buoyancy::Error> {
     let water = Water::new(1.0, 1.0, Vector3::y(), 0.0)?;
     let cube = |n: usize| -> Result<Case, buoyancy::Error> {
-        let (v, t) = shape::cube(n);
+        let (v, t) = shape::cube(n)?;
         Ok(Case {
             name: format!("cube {n}² per face ({} triangles)", t.len()),
             mesh: Mesh::new(v, t)?,
@@ -34,7 +34,7 @@ fn main() -> Result<(), buoyancy::Error> {
         })
     };
     let sphere = |s: usize| -> Result<Case, buoyancy::Error> {
-        let (v, t) = shape::uv_sphere(1.0, s, s);
+        let (v, t) = shape::uv_sphere(1.0, s, s)?;
         Ok(Case {
             name: format!("sphere {s}² segments ({} triangles)", t.len()),
             mesh: Mesh::new(v, t)?,

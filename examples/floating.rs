@@ -58,7 +58,7 @@ fn model(file: &str, radius: f64, z_up: bool) -> (String, Mesh<f64>) {
         Some(shape) => (file.trim_end_matches(".obj").to_string(), shape),
         None => {
             println!("note: {file} not found (set BUOYANCY_MESHES); using a procedural torus knot instead");
-            ("torus knot (procedural)".to_string(), shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16))
+            ("torus knot (procedural)".to_string(), shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16).unwrap())
         }
     };
     let mesh = Mesh::new(vertices, triangles).expect("a closed mesh");
@@ -101,7 +101,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut water = FloatingBodies::new(world.gravity);
     let mut bodies: Vec<Body> = Vec::new();
 
-    let cube = Mesh::new(shape::cube::<f64>(1).0, shape::cube::<f64>(1).1)?;
+    let (v, t) = shape::cube::<f64>(1)?;
+    let cube = Mesh::new(v, t)?;
     let sphere_radius = 0.5;
     let (knot_name, knot) = model("torusknot.obj", 0.6, false);
     let (bunny_name, bunny) = model("bunny.obj", 0.6, false);
@@ -112,7 +113,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     for s in [0.3, 0.7] {
         let ball = ColliderBuilder::ball(sphere_radius as f32);
-        let (v, t) = shape::uv_sphere::<f64>(sphere_radius, 64, 32);
+        let (v, t) = shape::uv_sphere::<f64>(sphere_radius, 64, 32)?;
         lineup.push(("sphere".into(), s, ball, Mesh::new(v, t)?, Theory::Sphere { radius: sphere_radius }, 64));
     }
     for s in [0.3, 0.7] {

@@ -99,7 +99,7 @@ fn water_parameters_are_checked() {
     // A non-unit normal is normalised; zero gravity is allowed (and gives no force).
     let w = Water::new(1000.0, 0.0, Vector3::new(0.0, 0.0, 3.0), 1.0).unwrap();
     assert_eq!(w.normal().into_inner(), Vector3::z());
-    let (v, t) = shape::cube::<f64>(1);
+    let (v, t) = shape::cube::<f64>(1).unwrap();
     let b = Mesh::new(v, t).unwrap().buoyancy(&Pose::identity(), &w, Method::Exact).unwrap();
     assert_eq!(b.force, Vector3::zeros());
     assert_eq!(b.submerged_volume, 1.0);
@@ -124,7 +124,7 @@ fn missing_or_unknown_files_are_errors() {
 /// f32 follows f64 to single precision, including far from the origin of the mesh frame.
 #[test]
 fn f32_matches_f64() {
-    let (v, t) = shape::uv_sphere::<f64>(1.0, 50, 50);
+    let (v, t) = shape::uv_sphere::<f64>(1.0, 50, 50).unwrap();
     let offset = Vector3::new(100.0, -50.0, 20.0);
     let v64: Vec<_> = v.iter().map(|p| p + offset).collect();
     let v32: Vec<_> = v64.iter().map(|p| p.map(|c| c as f32)).collect();

@@ -62,7 +62,7 @@ proptest! {
         level in coordinate(),
         density in prop_oneof![Just(1000.0), 1e-3..1e6f64],
     ) {
-        let (v, t) = shape::cube::<f64>(2);
+        let (v, t) = shape::cube::<f64>(2).unwrap();
         let v = v.iter().enumerate().map(|(i, p)| p + Vector3::new(noise[3 * i], noise[3 * i + 1], noise[3 * i + 2])).collect();
         let Ok(mesh) = Mesh::new(v, t) else { return Ok(()) };
         let Ok(water) = Water::new(density, 9.81, Vector3::new(normal.0, normal.1, normal.2), level) else { return Ok(()) };

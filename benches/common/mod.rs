@@ -44,12 +44,12 @@ pub fn models<T: Real>(large: bool) -> Vec<Model<T>> {
             eprintln!(
                 "note: ../shared/meshes not found (set BUOYANCY_MESHES); benchmarking a procedural torus knot only"
             );
-            let mesh = build(shape::torus_knot(2, 3, 1.0, 0.25, 80, 11));
+            let mesh = build(shape::torus_knot(2, 3, 1.0, 0.25, 80, 11).unwrap());
             models.push(Model { name: "procedural torus knot 1760".into(), paper_ms: None, mesh });
         }
     }
     if large {
-        let mesh = build(shape::torus_knot(2, 3, 1.0, 0.25, 4000, 125));
+        let mesh = build(shape::torus_knot(2, 3, 1.0, 0.25, 4000, 125).unwrap());
         models.push(Model { name: format!("torus knot {}", mesh.triangle_count()), paper_ms: None, mesh });
     }
     models

@@ -55,10 +55,10 @@ pub fn procedural_meshes() -> &'static [(String, Mesh<f64>)] {
         use buoyancy::shape;
         let build = |(v, t): shape::Shape<f64>| Mesh::new(v, t).unwrap();
         vec![
-            ("cube".into(), build(shape::cube(3))),
-            ("sphere".into(), build(shape::uv_sphere(1.0, 24, 16))),
-            ("torus".into(), build(shape::torus(1.0, 0.4, 32, 16))),
-            ("torus knot".into(), build(shape::torus_knot(2, 3, 1.0, 0.25, 80, 11))),
+            ("cube".into(), build(shape::cube(3).unwrap())),
+            ("sphere".into(), build(shape::uv_sphere(1.0, 24, 16).unwrap())),
+            ("torus".into(), build(shape::torus(1.0, 0.4, 32, 16).unwrap())),
+            ("torus knot".into(), build(shape::torus_knot(2, 3, 1.0, 0.25, 80, 11).unwrap())),
         ]
     })
 }

@@ -165,6 +165,8 @@ def test_load_errors(tmp_path: pathlib.Path) -> None:
         (lambda: shapes.uv_sphere(1.0, 2, 8), "slices: must be at least 3"),
         (lambda: shapes.torus(1.0, 2.0), "minor: must be smaller than major"),
         (lambda: shapes.torus_knot(sides=2), "sides: must be at least 3"),
+        (lambda: shapes.torus_knot(p=0), "p: must be at least 1"),
+        (lambda: shapes.cube(100_000), "n: too large"),
     ],
 )
 def test_shape_errors(call, match: str) -> None:  # type: ignore[no-untyped-def]

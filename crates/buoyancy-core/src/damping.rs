@@ -344,7 +344,7 @@ mod tests {
     use nalgebra::{Translation3, UnitQuaternion};
 
     fn cube(side: f64) -> Mesh<f64> {
-        let (v, t) = shape::cube::<f64>(4);
+        let (v, t) = shape::cube::<f64>(4).unwrap();
         Mesh::new(v.into_iter().map(|p| p * side).collect(), t).unwrap()
     }
 
@@ -364,7 +364,7 @@ mod tests {
         let omega = 3.0;
         let expected = -4.0 * (1000.0 * omega / 24.0 + 500.0 * omega * omega / 64.0);
         for n in [1, 2, 5] {
-            let (v, t) = shape::cube::<f64>(n);
+            let (v, t) = shape::cube::<f64>(n).unwrap();
             let c = Mesh::new(v, t).unwrap();
             let d = damp(&c, &at(0.0, -3.0, 0.0), Vector3::zeros(), Vector3::new(0.0, 0.0, omega));
             assert!(d.force.norm() < 1e-9, "{n}: {:?}", d.force);
@@ -376,7 +376,7 @@ mod tests {
         let results: alloc::vec::Vec<Damping<f64>> = [1, 3, 6]
             .into_iter()
             .map(|n| {
-                let (v, t) = shape::cube::<f64>(n);
+                let (v, t) = shape::cube::<f64>(n).unwrap();
                 let c = Mesh::new(v, t).unwrap();
                 let pose = Pose::from_parts(Translation3::new(0.0, 0.1, 0.0), UnitQuaternion::from_euler_angles(0.2, 0.1, 0.3));
                 damp(&c, &pose, Vector3::new(0.5, -1.0, 0.3), Vector3::new(0.4, -1.0, 2.0))
@@ -476,7 +476,7 @@ mod tests {
     fn angular_damping_scales_with_the_wetted_fraction() {
         // A sphere spinning about its center: the pressure drag is zero (the surface moves
         // tangentially), the angular damping alone acts, in proportion to what is wet.
-        let (v, t) = shape::uv_sphere::<f64>(1.0, 48, 24);
+        let (v, t) = shape::uv_sphere::<f64>(1.0, 48, 24).unwrap();
         let s = Mesh::new(v, t).unwrap();
         let w = Vector3::new(0.0, 3.0, 0.0);
         let half = damp(&s, &at(0.0, 0.0, 0.0), Vector3::zeros(), w);
@@ -504,7 +504,7 @@ mod tests {
         let negative = DampingCoefficients { linear: -1.0, ..k };
         assert!(matches!(c.damping(&at(0.0, 0.0, 0.0), &Vector3::zeros(), &Vector3::zeros(), &w, &negative), Err(Error::InvalidDamping { parameter: "linear", .. })));
         // f32 too.
-        let (v, t) = shape::cube::<f32>(2);
+        let (v, t) = shape::cube::<f32>(2).unwrap();
         let c32 = Mesh::new(v, t).unwrap();
         let pose = Pose::from_parts(Translation3::new(0.0f32, -0.2, 0.0), UnitQuaternion::identity());
         let d = c32.damping(&pose, &Vector3::new(0.0, -1.0, 0.0), &Vector3::zeros(), &Water::default(), &DampingCoefficients::default()).unwrap();

@@ -88,6 +88,13 @@ pub enum Error {
         /// What is wrong with it.
         reason: &'static str,
     },
+    /// A procedural shape's parameter is out of range (see [`crate::shape`]).
+    InvalidShape {
+        /// The parameter's name, as in the generator's signature.
+        parameter: &'static str,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
     /// A linear or angular velocity has a NaN or infinite component.
     InvalidVelocity,
     /// The result overflowed: the pose or the water parameters are too large for the scalar type.
@@ -163,6 +170,9 @@ impl fmt::Display for Error {
             Error::InvalidPose { reason } => write!(f, "invalid pose: {reason}"),
             Error::InvalidDamping { parameter, reason } => {
                 write!(f, "invalid damping coefficient {parameter}: {reason}")
+            }
+            Error::InvalidShape { parameter, reason } => {
+                write!(f, "invalid shape parameter {parameter}: {reason}")
             }
             Error::InvalidVelocity => {
                 write!(f, "invalid velocity: a NaN or infinite component")

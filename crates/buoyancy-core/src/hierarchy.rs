@@ -254,7 +254,7 @@ mod tests {
 
     #[test]
     fn boxes_round_outward() {
-        for x in [0.1, -0.1, 1.0 / 3.0, -2.0 / 3.0, 1e-30, 12345.678_9, 0.5, 0.0] {
+        for x in [0.1, -0.1, 1.0 / 3.0, -2.0 / 3.0, 1e-30, 12_345.678_9, 0.5, 0.0] {
             let (down, up) = (to_f32_outward(x, true), to_f32_outward(x, false));
             assert!(f64::from(down) <= x && x <= f64::from(up), "{x}");
             assert!(up == down || up == down.next_up(), "{x}: {down} {up}");

@@ -219,7 +219,7 @@ mod tests {
 
     #[test]
     fn stl_binary_and_ascii_round_trip() {
-        let (v, t) = shape::cube::<f64>(2);
+        let (v, t) = shape::cube::<f64>(2).unwrap();
         let (bv, bt) = parse_stl::<f64>(&binary_stl(&v, &t)).unwrap();
         assert_eq!((bv.len(), bt.len()), (v.len(), t.len()));
         assert!((Mesh::new(bv, bt).unwrap().volume() - 1.0).abs() < 1e-12);

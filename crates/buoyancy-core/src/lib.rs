@@ -24,7 +24,7 @@
 //! use nalgebra::{Translation3, UnitQuaternion};
 //!
 //! // A unit cube (centered at the origin of its mesh frame) with its center 0.25 m below the surface.
-//! let (vertices, triangles) = shape::cube::<f64>(1);
+//! let (vertices, triangles) = shape::cube::<f64>(1).unwrap();
 //! let cube = Mesh::new(vertices, triangles).unwrap();
 //! let pose = Pose::from_parts(Translation3::new(0.0, -0.25, 0.0), UnitQuaternion::identity());
 //! let b = cube.buoyancy(&pose, &Water::default(), Method::Exact).unwrap();

@@ -672,7 +672,7 @@ mod tests {
 
     #[test]
     fn half_submerged_cube_all_methods() {
-        let (v, t) = shape::cube::<f64>(4);
+        let (v, t) = shape::cube::<f64>(4).unwrap();
         let cube = Mesh::new(v, t).unwrap();
         let water = Water::default();
         for method in Method::ALL {
@@ -689,7 +689,7 @@ mod tests {
 
     #[test]
     fn dry_body_has_no_force_and_a_finite_center() {
-        let (v, t) = shape::cube::<f64>(2);
+        let (v, t) = shape::cube::<f64>(2).unwrap();
         let cube = Mesh::new(v, t).unwrap();
         for method in Method::ALL {
             let b = cube.buoyancy(&at(1.0, 3.0, 2.0), &Water::default(), method).unwrap();
@@ -703,7 +703,7 @@ mod tests {
 
     #[test]
     fn invalid_poses_are_errors() {
-        let (v, t) = shape::cube::<f64>(1);
+        let (v, t) = shape::cube::<f64>(1).unwrap();
         let cube = Mesh::new(v, t).unwrap();
         let w = Water::default();
         let e = cube.buoyancy(&at(f64::NAN, 0.0, 0.0), &w, Method::Exact).unwrap_err();

@@ -1,28 +1,54 @@
 //! Procedural closed meshes: cube, UV sphere, torus and torus knot.
 //!
 //! Each function returns `(vertices, triangles)` ready for [`Mesh::new`](crate::Mesh::new):
-//! closed 2-manifolds wound counter-clockwise seen from outside, with shared (welded) vertices.
+//! closed 2-manifolds wound counter-clockwise seen from outside, with shared (welded) vertices;
+//! or [`Error::InvalidShape`] naming the parameter that is out of range (a count too small or so
+//! large that the indices would not fit a `u32`, a length that is not finite and positive).
 
 use alloc::vec::Vec;
 use core::f64::consts::TAU;
 
 use nalgebra::{Point3, Vector3};
 
-use crate::Real;
+use crate::{Error, Real};
 
 /// Vertices and outward-wound triangles of a procedural mesh.
 pub type Shape<T> = (Vec<Point3<T>>, Vec<[u32; 3]>);
 
-fn finish<T: Real>(vertices: Vec<Point3<f64>>, triangles: Vec<[u32; 3]>) -> Shape<T> {
-    (vertices.into_iter().map(|p| p.map(T::lit)).collect(), triangles)
+fn finish<T: Real>(vertices: Vec<Point3<f64>>, triangles: Vec<[u32; 3]>) -> Result<Shape<T>, Error> {
+    Ok((vertices.into_iter().map(|p| p.map(T::lit)).collect(), triangles))
+}
+
+/// Checks that the count `value` is at least `min`.
+fn at_least(value: usize, min: usize, parameter: &'static str, reason: &'static str) -> Result<(), Error> {
+    if value >= min { Ok(()) } else { Err(Error::InvalidShape { parameter, reason }) }
+}
+
+/// Checks that the length `value` is finite and positive.
+fn positive(value: f64, parameter: &'static str) -> Result<(), Error> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(Error::InvalidShape { parameter, reason: "must be finite and positive" })
+    }
+}
+
+/// Checks that `vertices` vertices can be indexed by `u32` (`None`: the count overflowed).
+fn indexable(vertices: Option<usize>, parameter: &'static str) -> Result<(), Error> {
+    match vertices {
+        Some(count) if count <= u32::MAX as usize => Ok(()),
+        _ => Err(Error::InvalidShape { parameter, reason: "too large: the vertices would not fit u32 indices" }),
+    }
 }
 
 /// The unit cube `[-1/2, 1/2]³`, each face split into `n × n` squares of two triangles:
 /// `12·n²` triangles (`n = 10`: 1,200; `n = 100`: 120,000, the paper's two cubes).
 ///
-/// Panics if `n == 0`.
-pub fn cube<T: Real>(n: usize) -> Shape<T> {
-    assert!(n > 0, "a cube needs at least one square per face");
+/// # Errors
+/// [`Error::InvalidShape`] if `n == 0` or `n` is too large for `u32` indices.
+pub fn cube<T: Real>(n: usize) -> Result<Shape<T>, Error> {
+    at_least(n, 1, "n", "must be at least 1")?;
+    indexable(n.checked_mul(n).and_then(|n2| n2.checked_mul(6)).and_then(|v| v.checked_add(2)), "n")?;
     let side = n + 1;
     // Lattice points (i, j, k) ∈ [0, n]³ on the surface get an index on first use.
     let mut index = alloc::vec![u32::MAX; side * side * side];
@@ -63,9 +89,14 @@ pub fn cube<T: Real>(n: usize) -> Shape<T> {
 /// `stacks` from pole to pole: `2·slices·(stacks − 1)` triangles, single vertices at the poles
 /// (`50, 50`: 4,900; `200, 200`: 79,600). Every vertex lies on the sphere; the mesh is convex.
 ///
-/// Panics if `slices < 3` or `stacks < 2`.
-pub fn uv_sphere<T: Real>(radius: f64, slices: usize, stacks: usize) -> Shape<T> {
-    assert!(slices >= 3 && stacks >= 2, "a UV sphere needs slices >= 3 and stacks >= 2");
+/// # Errors
+/// [`Error::InvalidShape`] if `radius` is not finite and positive, `slices < 3`, `stacks < 2`,
+/// or there are too many vertices for `u32` indices.
+pub fn uv_sphere<T: Real>(radius: f64, slices: usize, stacks: usize) -> Result<Shape<T>, Error> {
+    positive(radius, "radius")?;
+    at_least(slices, 3, "slices", "must be at least 3")?;
+    at_least(stacks, 2, "stacks", "must be at least 2")?;
+    indexable(slices.checked_mul(stacks - 1).and_then(|v| v.checked_add(2)), "slices")?;
     let mut vertices = Vec::with_capacity(2 + slices * (stacks - 1));
     vertices.push(Point3::new(0.0, radius, 0.0));
     for i in 1..stacks {
@@ -100,8 +131,16 @@ pub fn uv_sphere<T: Real>(radius: f64, slices: usize, stacks: usize) -> Shape<T>
 /// A torus about the y axis: tube of radius `minor` around a circle of radius `major`,
 /// `segments` around the axis and `sides` around the tube: `2·segments·sides` triangles.
 ///
-/// Panics if `segments < 3` or `sides < 3`.
-pub fn torus<T: Real>(major: f64, minor: f64, segments: usize, sides: usize) -> Shape<T> {
+/// # Errors
+/// [`Error::InvalidShape`] if a radius is not finite and positive, `minor >= major` (the tube
+/// would cross itself), `segments < 3`, `sides < 3`, or there are too many vertices for `u32`
+/// indices.
+pub fn torus<T: Real>(major: f64, minor: f64, segments: usize, sides: usize) -> Result<Shape<T>, Error> {
+    positive(major, "major")?;
+    positive(minor, "minor")?;
+    if minor >= major {
+        return Err(Error::InvalidShape { parameter: "minor", reason: "must be smaller than major" });
+    }
     tube(segments, sides, minor, |u| {
         let (s, c) = (libm::sin(u), libm::cos(u));
         (Vector3::new(major * c, 0.0, -major * s), Vector3::new(-s, 0.0, -c))
@@ -112,7 +151,9 @@ pub fn torus<T: Real>(major: f64, minor: f64, segments: usize, sides: usize) -> 
 /// tube of radius `tube_radius`: `2·segments·sides` triangles (`80, 11`: 1,760, the size of the
 /// paper's torus knot).
 ///
-/// Panics if `segments < 3` or `sides < 3`.
+/// # Errors
+/// [`Error::InvalidShape`] if `p` or `q` is zero, a radius is not finite and positive,
+/// `segments < 3`, `sides < 3`, or there are too many vertices for `u32` indices.
 pub fn torus_knot<T: Real>(
     p: u32,
     q: u32,
@@ -120,7 +161,11 @@ pub fn torus_knot<T: Real>(
     tube_radius: f64,
     segments: usize,
     sides: usize,
-) -> Shape<T> {
+) -> Result<Shape<T>, Error> {
+    at_least(p as usize, 1, "p", "must be at least 1")?;
+    at_least(q as usize, 1, "q", "must be at least 1")?;
+    positive(radius, "radius")?;
+    positive(tube_radius, "tube_radius")?;
     let (p, q) = (p as f64, q as f64);
     let point = |u: f64| {
         let r = radius * (2.0 + libm::cos(q * u)) / 2.0;
@@ -140,8 +185,10 @@ fn tube<T: Real>(
     sides: usize,
     r: f64,
     curve: impl Fn(f64) -> (Vector3<f64>, Vector3<f64>),
-) -> Shape<T> {
-    assert!(segments >= 3 && sides >= 3, "a tube needs segments >= 3 and sides >= 3");
+) -> Result<Shape<T>, Error> {
+    at_least(segments, 3, "segments", "must be at least 3")?;
+    at_least(sides, 3, "sides", "must be at least 3")?;
+    indexable(segments.checked_mul(sides), "segments")?;
     let mut vertices = Vec::with_capacity(segments * sides);
     let frames: Vec<_> = (0..segments)
         .map(|i| curve(TAU * i as f64 / segments as f64))
@@ -198,9 +245,34 @@ mod tests {
     use core::f64::consts::PI;
 
     #[test]
+    fn bad_parameters_are_errors() {
+        let shape = |e: Result<Shape<f64>, Error>| match e {
+            Err(Error::InvalidShape { parameter, .. }) => parameter,
+            other => panic!("{:?}", other.map(|(v, t)| (v.len(), t.len()))),
+        };
+        assert_eq!(shape(cube(0)), "n");
+        assert_eq!(shape(cube(usize::MAX)), "n");
+        assert_eq!(shape(uv_sphere(0.0, 8, 8)), "radius");
+        assert_eq!(shape(uv_sphere(f64::NAN, 8, 8)), "radius");
+        assert_eq!(shape(uv_sphere(1.0, 2, 8)), "slices");
+        assert_eq!(shape(uv_sphere(1.0, 8, 1)), "stacks");
+        assert_eq!(shape(torus(1.0, -0.1, 8, 8)), "minor");
+        assert_eq!(shape(torus(1.0, 1.0, 8, 8)), "minor");
+        assert_eq!(shape(torus(f64::INFINITY, 0.1, 8, 8)), "major");
+        assert_eq!(shape(torus(1.0, 0.5, 2, 8)), "segments");
+        assert_eq!(shape(torus(1.0, 0.5, 8, 2)), "sides");
+        assert_eq!(shape(torus(1.0, 0.5, 1 << 20, 1 << 13)), "segments");
+        assert_eq!(shape(torus_knot(0, 3, 1.0, 0.25, 80, 11)), "p");
+        assert_eq!(shape(torus_knot(2, 0, 1.0, 0.25, 80, 11)), "q");
+        assert_eq!(shape(torus_knot(2, 3, 1.0, 0.0, 80, 11)), "tube_radius");
+        let message = alloc::string::ToString::to_string(&uv_sphere::<f64>(1.0, 2, 8).unwrap_err());
+        assert_eq!(message, "invalid shape parameter slices: must be at least 3");
+    }
+
+    #[test]
     fn cube_is_closed_unit_and_centered() {
         for n in [1, 3, 10] {
-            let (v, t) = cube::<f64>(n);
+            let (v, t) = cube::<f64>(n).unwrap();
             assert_eq!(t.len(), 12 * n * n);
             assert_eq!(v.len(), 6 * n * n + 2);
             let m = Mesh::new(v, t).unwrap();
@@ -212,7 +284,7 @@ mod tests {
 
     #[test]
     fn sphere_volume_converges() {
-        let (v, t) = uv_sphere::<f64>(1.0, 50, 50);
+        let (v, t) = uv_sphere::<f64>(1.0, 50, 50).unwrap();
         assert_eq!(t.len(), 4900);
         let m = Mesh::new(v, t).unwrap();
         assert!(!m.was_reoriented());
@@ -222,7 +294,7 @@ mod tests {
 
     #[test]
     fn torus_volume() {
-        let (v, t) = torus::<f64>(2.0, 0.5, 128, 64);
+        let (v, t) = torus::<f64>(2.0, 0.5, 128, 64).unwrap();
         let m = Mesh::new(v, t).unwrap();
         assert!(!m.was_reoriented());
         // Pappus on the inscribed polygons: a 64-gon of circumradius 0.5 swept by a 128-gon of
@@ -234,10 +306,10 @@ mod tests {
 
     #[test]
     fn torus_knot_is_closed_and_outward() {
-        let (v, t) = torus_knot::<f64>(2, 3, 1.0, 0.25, 80, 11);
+        let (v, t) = torus_knot::<f64>(2, 3, 1.0, 0.25, 80, 11).unwrap();
         assert_eq!(t.len(), 1760);
         assert!(!Mesh::new(v, t).unwrap().was_reoriented());
-        let (v, t) = torus_knot::<f64>(2, 3, 1.0, 0.25, 800, 64);
+        let (v, t) = torus_knot::<f64>(2, 3, 1.0, 0.25, 800, 64).unwrap();
         let m = Mesh::new(v, t).unwrap();
         // A tube of radius r along a curve of length L encloses about π r² L.
         let length: f64 = (0..10000)

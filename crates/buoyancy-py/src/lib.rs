@@ -38,6 +38,9 @@ const DETACH_TRIANGLES: usize = 4096;
 /// The Python exception for a core error: mesh problems are `MeshError`, file problems
 /// `OSError`, everything else `ValueError`, prefixed with the argument's name when known.
 fn to_py(e: Error, argument: Option<&str>) -> PyErr {
+    if let Error::InvalidShape { parameter, reason } = e {
+        return arg_error(parameter, reason);
+    }
     let message = match argument {
         Some(name) => format!("{name}: {e}"),
         None => e.to_string(),
@@ -748,44 +751,18 @@ fn load(py: Python<'_>, path: PathBuf) -> PyResult<PyMesh> {
     PyMesh::build(py, shape)
 }
 
-fn at_least(value: usize, min: usize, name: &str) -> PyResult<()> {
-    if value < min {
-        Err(arg_error(
-            name,
-            format!("must be at least {min}, got {value}"),
-        ))
-    } else {
-        Ok(())
-    }
-}
-
-fn positive(value: f64, name: &str) -> PyResult<()> {
-    if value.is_finite() && value > 0.0 {
-        Ok(())
-    } else {
-        Err(arg_error(
-            name,
-            format!("must be finite and positive, got {value}"),
-        ))
-    }
-}
-
 /// The unit cube [-1/2, 1/2]³, each face split in n × n squares (12·n² triangles).
 #[pyfunction]
 #[pyo3(signature = (n=1))]
 fn cube(py: Python<'_>, n: usize) -> PyResult<PyMesh> {
-    at_least(n, 1, "n")?;
-    PyMesh::build(py, buoyancy_core::shape::cube(n))
+    PyMesh::build(py, buoyancy_core::shape::cube(n).map_err(|e| to_py(e, None))?)
 }
 
 /// A UV sphere about the origin (2·slices·(stacks − 1) triangles).
 #[pyfunction]
 #[pyo3(signature = (radius=1.0, slices=32, stacks=16))]
 fn uv_sphere(py: Python<'_>, radius: f64, slices: usize, stacks: usize) -> PyResult<PyMesh> {
-    positive(radius, "radius")?;
-    at_least(slices, 3, "slices")?;
-    at_least(stacks, 2, "stacks")?;
-    PyMesh::build(py, buoyancy_core::shape::uv_sphere(radius, slices, stacks))
+    PyMesh::build(py, buoyancy_core::shape::uv_sphere(radius, slices, stacks).map_err(|e| to_py(e, None))?)
 }
 
 /// A torus about the y axis (2·segments·sides triangles).
@@ -798,16 +775,9 @@ fn torus(
     segments: usize,
     sides: usize,
 ) -> PyResult<PyMesh> {
-    positive(major, "major")?;
-    positive(minor, "minor")?;
-    if minor >= major {
-        return Err(arg_error("minor", "must be smaller than major"));
-    }
-    at_least(segments, 3, "segments")?;
-    at_least(sides, 3, "sides")?;
     PyMesh::build(
         py,
-        buoyancy_core::shape::torus(major, minor, segments, sides),
+        buoyancy_core::shape::torus(major, minor, segments, sides).map_err(|e| to_py(e, None))?,
     )
 }
 
@@ -823,13 +793,9 @@ fn torus_knot(
     segments: usize,
     sides: usize,
 ) -> PyResult<PyMesh> {
-    positive(radius, "radius")?;
-    positive(tube_radius, "tube_radius")?;
-    at_least(segments, 3, "segments")?;
-    at_least(sides, 3, "sides")?;
     PyMesh::build(
         py,
-        buoyancy_core::shape::torus_knot(p, q, radius, tube_radius, segments, sides),
+        buoyancy_core::shape::torus_knot(p, q, radius, tube_radius, segments, sides).map_err(|e| to_py(e, None))?,
     )
 }
 

@@ -23,7 +23,7 @@ fn bunny() -> (String, Mesh<f64>) {
         Ok(shape) => ("bunny".to_string(), shape),
         Err(_) => {
             eprintln!("note: bunny.obj not found (set BUOYANCY_MESHES); benchmarking the procedural torus knot");
-            ("torus knot".to_string(), shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16))
+            ("torus knot".to_string(), shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16).unwrap())
         }
     };
     let mesh = Mesh::new(v, t).unwrap();

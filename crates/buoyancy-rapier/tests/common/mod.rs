@@ -90,7 +90,7 @@ pub fn model(file: &str, radius: f64) -> (String, Mesh<f64>) {
         Some(shape) => (file.to_string(), shape),
         None => {
             eprintln!("note: {file} not found (set BUOYANCY_MESHES); using the procedural torus knot");
-            ("procedural torus knot".to_string(), shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 128, 12))
+            ("procedural torus knot".to_string(), shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 128, 12).unwrap())
         }
     };
     let mesh = Mesh::new(v, t).unwrap();
