@@ -9,7 +9,8 @@
 //!
 //! `cargo bench --bench rounds [-- large] [MODEL…] [METHOD…]`: naming models (`armadillo`) or
 //! methods (`exact`, as in [`Method::name`], or `damping`) or a traversal (`scan`, `hierarchy`) keeps only those (a model is kept when its
-//! name contains a given word), for profiling one case; `BUOYANCY_ROUNDS=N` takes the best of N
+//! name contains a given word), for profiling one case; `parallel` (with `--features rayon`)
+//! times `Mesh::par_buoyancy_with` instead; `BUOYANCY_ROUNDS=N` takes the best of N
 //! rounds instead of 15.
 
 mod common;
@@ -37,7 +38,10 @@ fn main() {
         (false, true) => vec![Traversal::Hierarchy],
         _ => vec![Traversal::Scan, Traversal::Hierarchy],
     };
-    let keyword = |a: &str| a == "large" || a == "damping" || a == "scan" || a == "hierarchy" || Method::ALL.iter().any(|m| m.name() == a);
+    let parallel = args.iter().any(|a| a == "parallel");
+    #[cfg(not(feature = "rayon"))]
+    assert!(!parallel, "`parallel` needs --features rayon");
+    let keyword = |a: &str| a == "large" || a == "parallel" || a == "damping" || a == "scan" || a == "hierarchy" || Method::ALL.iter().any(|m| m.name() == a);
     let names: Vec<&String> = args.iter().filter(|a| !keyword(a)).collect();
     let mut models = common::models::<f64>(large);
     let (v, t) = buoyancy::shape::torus(1.0, 0.25, 200, 75).unwrap();
@@ -59,7 +63,15 @@ fn main() {
                     .map(|_| {
                         let started = Instant::now();
                         for pose in &poses {
-                            black_box(model.mesh.buoyancy_with(black_box(pose), &water, method, traversal).unwrap());
+                            #[cfg(feature = "rayon")]
+                            let result = if parallel {
+                                model.mesh.par_buoyancy_with(black_box(pose), &water, method, traversal)
+                            } else {
+                                model.mesh.buoyancy_with(black_box(pose), &water, method, traversal)
+                            };
+                            #[cfg(not(feature = "rayon"))]
+                            let result = model.mesh.buoyancy_with(black_box(pose), &water, method, traversal);
+                            black_box(result.unwrap());
                         }
                         started.elapsed().as_secs_f64() * 1e6 / poses.len() as f64
                     })

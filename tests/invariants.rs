@@ -328,20 +328,26 @@ fn vertices_exactly_on_the_surface() {
     }
 }
 
-/// With rayon, the parallel result is bit-identical to the serial one.
+/// With rayon, the parallel result is bit-identical to the serial one, for every traversal.
 #[cfg(feature = "rayon")]
 #[test]
 fn parallel_equals_serial() {
-    let (v, t) = shape::uv_sphere::<f64>(1.0, 200, 200).unwrap();
+    // 105,340 triangles: the scan has 26 chunks, and the hierarchy's root is split in parallel
+    // (from 100,000 triangles).
+    let (v, t) = shape::uv_sphere::<f64>(1.0, 230, 230).unwrap();
     let mesh = Mesh::new(v, t).unwrap();
     let water = Water::default();
     for (i, h) in [-1.2, -0.6, 0.0, 0.37, 0.9].into_iter().enumerate() {
         let p = pose(Vector3::new(0.1, h, 0.2), [0.1 * i as f64, 0.3, 0.7]);
         for method in Method::ALL {
-            let serial = mesh.buoyancy_with(&p, &water, method, Traversal::Scan).unwrap();
-            for _ in 0..3 {
-                assert_eq!(mesh.par_buoyancy(&p, &water, method).unwrap(), serial, "{method}, h = {h}");
+            for traversal in [Traversal::Scan, Traversal::Hierarchy] {
+                let serial = mesh.buoyancy_with(&p, &water, method, traversal).unwrap();
+                for _ in 0..2 {
+                    let parallel = mesh.par_buoyancy_with(&p, &water, method, traversal).unwrap();
+                    assert_eq!(parallel, serial, "{method}, {traversal:?}, h = {h}");
+                }
             }
+            assert_eq!(mesh.par_buoyancy(&p, &water, method).unwrap(), mesh.buoyancy(&p, &water, method).unwrap());
         }
     }
 }

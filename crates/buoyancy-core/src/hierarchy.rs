@@ -35,10 +35,18 @@ use alloc::vec::Vec;
 
 use nalgebra::Vector3;
 
+use crate::integrals::Sums;
+use crate::parallel::join;
 use crate::Real;
 
 /// Most triangles in a leaf: a node with more triangles is an inner node.
 const LEAF_SIZE: u32 = 8;
+
+/// Depth down to which [`Hierarchy::reduce`] sums the subtrees apart (at most 16 of them).
+const SPLIT_DEPTH: u32 = 4;
+
+/// Fewest triangles under a node for [`Hierarchy::reduce`] to sum its halves in parallel.
+const PARALLEL_TRIANGLES: u32 = 100000;
 
 /// A node of the hierarchy (see the module documentation): what the walk reads.
 #[derive(Debug, Clone, Copy)]
@@ -86,6 +94,59 @@ pub(crate) enum Visit {
     Triangles(core::ops::Range<usize>),
 }
 
+/// Where a node's box lies against the water plane, round-off margin included.
+enum Side {
+    /// Every point below the surface.
+    Below,
+    /// Every point above it.
+    Above,
+    /// The surface may cross the box.
+    Crossing,
+}
+
+/// One query's plane in the form the node test wants (see the module documentation).
+struct Query<T: Real> {
+    normal: [T; 3],
+    height: T,
+    margin: T,
+    /// Per axis, the index in `Node::bounds` of the box's lower (`near`) and upper (`far`) end
+    /// along the normal.
+    near: [usize; 3],
+    far: [usize; 3],
+}
+
+impl<T: Real> Query<T> {
+    fn new(hierarchy: &Hierarchy<T>, normal: &Vector3<T>, height: T) -> Self {
+        let normal = [normal.x, normal.y, normal.z];
+        let near: [usize; 3] = core::array::from_fn(|k| if normal[k] >= T::zero() { k } else { k + 3 });
+        Query {
+            normal,
+            height,
+            margin: T::default_epsilon() * T::lit(8.0) * (hierarchy.magnitude + height.abs()),
+            near,
+            far: near.map(|k| (k + 3) % 6),
+        }
+    }
+
+    #[inline(always)]
+    fn side(&self, node: &Node) -> Side {
+        let (n, b) = (&self.normal, &node.bounds);
+        let at = |corner: &[usize; 3]| {
+            n[0] * T::from_f32_exact(b[corner[0]])
+                + n[1] * T::from_f32_exact(b[corner[1]])
+                + n[2] * T::from_f32_exact(b[corner[2]])
+                + self.height
+        };
+        if at(&self.far) + self.margin < T::zero() {
+            Side::Below
+        } else if at(&self.near) - self.margin > T::zero() {
+            Side::Above
+        } else {
+            Side::Crossing
+        }
+    }
+}
+
 impl<T: Real> Hierarchy<T> {
     /// Builds the hierarchy by median splits along the longest axis of the triangle centroids,
     /// and returns it with the leaf order: the triangles (indices into `triangles`) listed leaf
@@ -118,43 +179,76 @@ impl<T: Real> Hierarchy<T> {
         (hierarchy, order)
     }
 
-    /// Calls `visit` for every node entirely under water and every leaf the surface may cross,
+    /// Sums `visit` over every node entirely under water and every leaf the surface may cross,
     /// given the up normal `normal` and the centroid's height `height`, both in the mesh frame.
-    /// No allocation: the pending nodes are kept on a fixed stack (the depth is at most
-    /// log₂ of the triangle count, below 64).
+    ///
+    /// The sum has a fixed shape, whatever `parallel` is: the subtrees the surface crosses down
+    /// to depth [`SPLIT_DEPTH`] are summed apart, each from `S::zero()`, and merged pairwise up
+    /// the tree; with `parallel` (and the `rayon` feature), the two halves of a node of at least
+    /// [`PARALLEL_TRIANGLES`] triangles are summed on rayon's pool. So the result does not
+    /// depend on the threads. No allocation: below the split, the pending nodes are kept on a
+    /// fixed stack (the depth is at most log₂ of the triangle count, below 64).
     #[inline]
-    pub fn walk(&self, normal: &Vector3<T>, height: T, mut visit: impl FnMut(Visit)) {
-        let margin = T::default_epsilon() * T::lit(8.0) * (self.magnitude + height.abs());
-        let n = [normal.x, normal.y, normal.z];
-        // Per axis, the box's lower (`near`) and upper (`far`) end along the normal.
-        let near: [usize; 3] = core::array::from_fn(|k| if n[k] >= T::zero() { k } else { k + 3 });
-        let far = near.map(|k| (k + 3) % 6);
+    pub fn reduce<S: Sums>(&self, normal: &Vector3<T>, height: T, parallel: bool, visit: &(impl Fn(&mut S, Visit) + Sync)) -> S {
+        let query = Query::new(self, normal, height);
+        self.split(&query, 0, 0, parallel, visit)
+    }
+
+    fn split<S: Sums>(&self, query: &Query<T>, index: u32, depth: u32, parallel: bool, visit: &(impl Fn(&mut S, Visit) + Sync)) -> S {
+        let node = &self.nodes[index as usize];
+        if depth == SPLIT_DEPTH || node.is_leaf() {
+            let mut sums = S::zero();
+            self.walk_from(query, index, |v| visit(&mut sums, v));
+            return sums;
+        }
+        match query.side(node) {
+            Side::Below => {
+                let mut sums = S::zero();
+                visit(&mut sums, Visit::Submerged(index as usize, node.count));
+                sums
+            }
+            Side::Above => S::zero(),
+            Side::Crossing => {
+                let (left, right) = join(
+                    parallel && node.count >= PARALLEL_TRIANGLES,
+                    || self.split(query, index + 1, depth + 1, parallel, visit),
+                    || self.split(query, node.link, depth + 1, parallel, visit),
+                );
+                left.merge(right)
+            }
+        }
+    }
+
+    /// Calls `visit` for every node entirely under water and every leaf the surface may cross,
+    /// one after the other (depth first, left before right).
+    #[inline]
+    pub fn walk(&self, normal: &Vector3<T>, height: T, visit: impl FnMut(Visit)) {
+        self.walk_from(&Query::new(self, normal, height), 0, visit);
+    }
+
+    /// [`Hierarchy::walk`] of the subtree at `root`.
+    #[inline]
+    fn walk_from(&self, query: &Query<T>, root: u32, mut visit: impl FnMut(Visit)) {
         let mut stack = [0u32; 64];
+        stack[0] = root;
         let mut top = 1;
         while top > 0 {
             top -= 1;
             let index = stack[top];
             let node = &self.nodes[index as usize];
-            let b = &node.bounds;
-            let at = |corner: &[usize; 3]| {
-                n[0] * T::from_f32_exact(b[corner[0]])
-                    + n[1] * T::from_f32_exact(b[corner[1]])
-                    + n[2] * T::from_f32_exact(b[corner[2]])
-                    + height
-            };
-            let (low, high) = (at(&near), at(&far));
-            if high + margin < T::zero() {
-                visit(Visit::Submerged(index as usize, node.count));
-            } else if low - margin > T::zero() {
-                // Dry.
-            } else if node.is_leaf() {
-                let first = node.link as usize;
-                visit(Visit::Triangles(first..first + node.count as usize));
-            } else {
-                // Right child below the left one (the node after this), which goes first.
-                stack[top] = node.link;
-                stack[top + 1] = index + 1;
-                top += 2;
+            match query.side(node) {
+                Side::Below => visit(Visit::Submerged(index as usize, node.count)),
+                Side::Above => {}
+                Side::Crossing if node.is_leaf() => {
+                    let first = node.link as usize;
+                    visit(Visit::Triangles(first..first + node.count as usize));
+                }
+                Side::Crossing => {
+                    // Right child below the left one (the node after this), which goes first.
+                    stack[top] = node.link;
+                    stack[top + 1] = index + 1;
+                    top += 2;
+                }
             }
         }
     }

@@ -49,6 +49,7 @@ mod integrals;
 pub mod io;
 mod mesh;
 mod method;
+mod parallel;
 mod query;
 mod real;
 pub mod shape;
