@@ -29,9 +29,11 @@
 //! (see `hierarchy` and `surface_moments`), and the cost follows the waterline.
 //!
 //! # Determinism
-//! Triangles are summed in fixed chunks of [`CHUNK`] combined pairwise in a fixed tree, whether
-//! the chunks run on one thread or on rayon's pool: the serial and parallel results are
-//! bit-identical and the same input always gives the same output.
+//! The scan sums the triangles in fixed chunks of [`CHUNK`] combined pairwise in a fixed tree;
+//! the hierarchy sums its top subtrees apart and merges them up the tree (see `hierarchy`).
+//! Either way the pieces are the same whether they run on one thread or on rayon's pool: the
+//! serial and parallel results are bit-identical and the same input always gives the same
+//! output.
 
 use nalgebra::{Matrix3, Point3, UnitQuaternion, Vector3};
 
@@ -237,7 +239,8 @@ impl<T: Real> Mesh<T> {
     /// The buoyancy of this mesh placed by `pose` (mesh → world) in `water`, by `method`.
     /// The torque is about the body's center of mass; see [`Buoyancy::about`] for another point.
     ///
-    /// Runs in one pass over the triangles with no allocation.
+    /// Walks the mesh's hierarchy from [`Traversal::CROSSOVER`] triangles up, so the cost follows
+    /// the waterline; below that, one pass over the triangles. No allocation.
     ///
     /// # Errors
     /// [`Error::InvalidPose`] if the pose has a NaN or infinite component or a zero quaternion
