@@ -183,8 +183,9 @@ struct Drag<T: Real> {
 }
 
 impl<T: Real> Drag<T> {
-    /// Adds the wetted triangle `p` (corners relative to the centroid): its area, and the drag
-    /// on the part of it facing the flow.
+    /// Adds the wetted triangle `p` (corners relative to the centroid) of outward unit normal
+    /// `normal` and twice the area `norm2`: its area, and the drag on the part of it facing the
+    /// flow. A triangle of zero area adds nothing.
     #[inline(always)]
     fn wetted(&mut self, p: [Vector3<T>; 3], normal: &Vector3<T>, norm2: T) {
         let zero = T::zero();

@@ -46,7 +46,7 @@ const LEAF_SIZE: u32 = 8;
 const SPLIT_DEPTH: u32 = 4;
 
 /// Fewest triangles under a node for [`Hierarchy::reduce`] to sum its halves in parallel.
-const PARALLEL_TRIANGLES: u32 = 100000;
+const PARALLEL_TRIANGLES: u32 = 100_000;
 
 /// A node of the hierarchy (see the module documentation): what the walk reads.
 #[derive(Debug, Clone, Copy)]
