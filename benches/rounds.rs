@@ -2,16 +2,20 @@
 //! 30,000-triangle torus (`benches/peers.py`) and, with `-- large`, the 10⁶-triangle torus knot,
 //! by the scan and by the hierarchy, f64, one thread. The last column is the mean number of
 //! triangles the surface cuts per pose, what the hierarchy's cost follows. A last row per model
-//! times `Mesh::damping` (which scans) at the same poses, the body moving at 1 m/s down and
-//! sideways and turning at 1 rad/s.
-//! Each figure is the fastest of 15 rounds of the paper's 100 poses, in µs per evaluation; the
-//! minimum is the figure least disturbed by other work on a shared machine.
+//! times `Mesh::damping` at the same poses, the body moving at 1 m/s down and sideways and
+//! turning at 1 rad/s. Each figure is the fastest of 15 rounds of the paper's 100 poses, in µs
+//! per evaluation; the minimum is the figure least disturbed by other work on a shared machine.
 //!
-//! `cargo bench --bench rounds [-- large] [MODEL…] [METHOD…]`: naming models (`armadillo`) or
-//! methods (`exact`, as in [`Method::name`], or `damping`) or a traversal (`scan`, `hierarchy`) keeps only those (a model is kept when its
-//! name contains a given word), for profiling one case; `parallel` (with `--features rayon`)
-//! times `Mesh::par_buoyancy_with` instead; `BUOYANCY_ROUNDS=N` takes the best of N
-//! rounds instead of 15.
+//! `cargo bench --bench rounds [-- WORD…]`, each word narrowing what runs, for profiling one case:
+//!
+//! * `large`: add the 10⁶-triangle torus knot;
+//! * a word of a model's name (`armadillo`, `torus`): only the models whose name contains it;
+//! * a method (`exact`, as in [`Method::name`]) or `damping`: only those rows;
+//! * `scan` or `hierarchy`: only that traversal;
+//! * `parallel` (with `--features rayon`): `Mesh::par_buoyancy_with` instead of
+//!   `Mesh::buoyancy_with`.
+//!
+//! `BUOYANCY_ROUNDS=N` takes the best of N rounds instead of 15.
 
 mod common;
 
