@@ -108,7 +108,7 @@ fn main() {
                 .sum::<f64>()
                 / poses.len() as f64
                 * model.mesh.triangle_count() as f64;
-            println!("| {} | damping | {time:.2} | – | {wetted:.0} wetted (area-weighted) |", model.name);
+            println!("| {} | damping | – | {time:.2} | {wetted:.0} wetted (area-weighted) |", model.name);
         }
     }
 }
