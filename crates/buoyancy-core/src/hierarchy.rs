@@ -259,14 +259,8 @@ impl<T: Real> Hierarchy<T> {
         (!node.is_leaf()).then(|| (index + 1, node.link as usize))
     }
 
-    /// The triangles (in leaf order) of leaf `index`.
-    pub fn triangles(&self, index: usize) -> core::ops::Range<usize> {
-        let node = &self.nodes[index];
-        debug_assert!(node.is_leaf());
-        node.link as usize..(node.link + node.count) as usize
-    }
-
-    /// The triangles (in leaf order) under node `index`: its leaves' ranges, which are adjacent.
+    /// The triangles (in leaf order) under node `index`: its leaves' ranges, which are adjacent
+    /// (a leaf's own range for a leaf).
     pub fn range(&self, index: usize) -> core::ops::Range<usize> {
         let mut first = index;
         while let Some((left, _)) = self.children(first) {

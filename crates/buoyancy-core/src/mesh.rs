@@ -153,16 +153,17 @@ impl<T: Real> Mesh<T> {
         let relative: Vec<Vector3<f64>> = points.iter().map(|p| p - centroid).collect();
         let mut volume6 = Vec::with_capacity(triangles.len());
         let mut moment24 = Vec::with_capacity(triangles.len());
+        let mut area2 = Vec::with_capacity(triangles.len());
         let mut volume_scale = 0.0;
-        let mut surface_area = 0.0;
         for t in &triangles {
             let [a, b, c] = t.map(|i| relative[i as usize]);
-            surface_area += (b - a).cross(&(c - a)).norm() / 2.0;
+            area2.push((b - a).cross(&(c - a)));
             let det = a.dot(&b.cross(&c));
             volume_scale += det.abs() / 6.0;
             volume6.push(det);
             moment24.push((a + b + c) * det);
         }
+        let surface_area: f64 = area2.iter().map(|a| a.norm() / 2.0).sum();
         let bounding_radius = relative.iter().map(|v| v.norm()).fold(0.0, f64::max);
         let vertices: Vec<Vector3<T>> = relative.iter().map(|v| v.map(T::lit)).collect();
         let (hierarchy, order) = Hierarchy::build(&vertices, &triangles, &volume6, &moment24);
@@ -187,11 +188,10 @@ impl<T: Real> Mesh<T> {
         let leaf_triangles: Vec<[u32; 3]> =
             order.iter().map(|&i| triangles[i as usize].map(|k| vertex_slots[k as usize])).collect();
         let surface_moments = NodeMoments::build(&hierarchy, |i| leaf_triangles[i].map(|k| vertices[k as usize]));
-    let normals = leaf_triangles
+        let normals = order
             .iter()
-            .map(|t| {
-                let [a, b, c] = t.map(|k| vertices[k as usize].map(T::to_f64));
-                let area2 = (b - a).cross(&(c - a));
+            .map(|&i| {
+                let area2 = area2[i as usize];
                 let norm2 = area2.norm();
                 let normal = if norm2 > 0.0 { area2 / norm2 } else { Vector3::zeros() };
                 (normal.map(T::lit), T::lit(norm2))

@@ -438,23 +438,20 @@ impl<T: Real> Mesh<T> {
         let n = &frame.normal_local;
         let WalkSums(mut sums, whole) = self.hierarchy.reduce(n, frame.height, parallel, &|walk: &mut WalkSums<T>, visit| {
             let WalkSums(sums, whole) = walk;
-            match visit {
+            let triangles = match visit {
                 Visit::Submerged(index, count) => match self.surface_moments.get(index) {
                     Some(moments) => {
                         whole.add(moments);
                         sums.counts.full += count as usize;
+                        return;
                     }
-                    None => {
-                        for i in self.hierarchy.triangles(index) {
-                            triangle(sums, i);
-                        }
-                    }
+                    // A leaf: no stored coefficients.
+                    None => self.hierarchy.range(index),
                 },
-                Visit::Triangles(triangles) => {
-                    for i in triangles {
-                        triangle(sums, i);
-                    }
-                }
+                Visit::Triangles(triangles) => triangles,
+            };
+            for i in triangles {
+                triangle(sums, i);
             }
         });
         whole.add_to(n, frame.height, &mut sums);

@@ -174,7 +174,7 @@ fn subtree<T: Real>(
     match hierarchy.children(index) {
         None => {
             let mut total = SurfaceMoments::zero();
-            for i in hierarchy.triangles(index) {
+            for i in hierarchy.range(index) {
                 total.add(&SurfaceMoments::triangle(corners(i).map(|v| v.map(T::to_f64))));
             }
             total
