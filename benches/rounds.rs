@@ -15,7 +15,10 @@
 //! * `parallel` (with `--features rayon`): `Mesh::par_buoyancy_with` instead of
 //!   `Mesh::buoyancy_with`.
 //!
-//! `BUOYANCY_ROUNDS=N` takes the best of N rounds instead of 15.
+//! `BUOYANCY_ROUNDS=N` takes the best of N rounds instead of 15. `BUOYANCY_POSES=N` spreads N
+//! poses over the same sweep instead of 100: with thousands, each pose is close to the one
+//! before, as in a simulation, and the branch predictor and the caches carry over from one
+//! evaluation to the next (see "Branches" in `benches/RESULTS.md`).
 
 mod common;
 
@@ -57,10 +60,12 @@ fn main() {
         .collect();
     let water = common::water::<f64>();
     let rounds: usize = std::env::var("BUOYANCY_ROUNDS").ok().and_then(|r| r.parse().ok()).unwrap_or(15);
+    let pose_count: usize = std::env::var("BUOYANCY_POSES").ok().and_then(|r| r.parse().ok()).unwrap_or(100);
+    assert!(pose_count >= 2, "BUOYANCY_POSES must be at least 2");
     println!("| model | method | scan µs | hierarchy µs | cut triangles |");
     println!("|---|---|---|---|---|");
     for model in &models {
-        let poses = common::poses(&model.mesh);
+        let poses = common::sweep(&model.mesh, pose_count);
         for &method in &methods {
             let time = |traversal: Traversal| {
                 (0..rounds)

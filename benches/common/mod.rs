@@ -59,6 +59,13 @@ pub fn models<T: Real>(large: bool) -> Vec<Model<T>> {
 /// nearly fully submerged. The body is tilted (so no face is parallel to the water) and lowered
 /// until the surface sweeps from 5% to 95% of its vertical extent.
 pub fn poses<T: Real>(mesh: &Mesh<T>) -> Vec<Pose<T>> {
+    sweep(mesh, 100)
+}
+
+/// [`poses`] with `count` poses over the same sweep: with many, each pose is close to the one
+/// before, as the steps of a simulation are.
+pub fn sweep<T: Real>(mesh: &Mesh<T>, count: usize) -> Vec<Pose<T>> {
+    assert!(count >= 2, "a sweep needs at least 2 poses");
     let rotation = UnitQuaternion::from_euler_angles(T::lit(0.3), T::lit(0.5), T::lit(0.2));
     let up = Vector3::y();
     let heights: Vec<T> = (0..mesh.vertex_count())
@@ -66,9 +73,9 @@ pub fn poses<T: Real>(mesh: &Mesh<T>) -> Vec<Pose<T>> {
         .collect();
     let lowest = heights.iter().copied().fold(T::max_value().unwrap(), T::min);
     let highest = heights.iter().copied().fold(T::min_value().unwrap(), T::max);
-    (0..100)
+    (0..count)
         .map(|k| {
-            let fraction = T::lit(0.05 + 0.9 * k as f64 / 99.0);
+            let fraction = T::lit(0.05 + 0.9 * k as f64 / (count - 1) as f64);
             // Water at `lowest + fraction·extent` relative to the centroid, i.e. centroid at minus that.
             let centroid_height = -(lowest + (highest - lowest) * fraction);
             let translation = up * centroid_height - rotation * mesh.centroid().coords;
