@@ -310,9 +310,8 @@ impl<T: Real> Mesh<T> {
                 }
             }
         });
-        let sums = drag;
 
-        let wetted_area = sums.area2 * half;
+        let wetted_area = drag.area2 * half;
         let wetted_fraction = if self.surface_area > zero {
             (wetted_area / self.surface_area).min(T::one())
         } else {
@@ -324,8 +323,8 @@ impl<T: Real> Mesh<T> {
                 * size
                 * (coefficients.angular_linear + coefficients.angular_quadratic * omega.norm()));
         let result = Damping {
-            force: frame.rotation * sums.force,
-            torque: frame.rotation * (sums.torque + angular),
+            force: frame.rotation * drag.force,
+            torque: frame.rotation * (drag.torque + angular),
             torque_point: frame.center_of_mass,
             wetted_area,
             wetted_fraction,
