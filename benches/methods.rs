@@ -9,7 +9,7 @@ mod common;
 use std::hint::black_box;
 
 use buoyancy::{Method, Real};
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 fn bench_scalar<T: Real>(c: &mut Criterion, scalar: &str) {
     let water = common::water::<T>();
@@ -24,7 +24,12 @@ fn bench_scalar<T: Real>(c: &mut Criterion, scalar: &str) {
             group.bench_function(BenchmarkId::new("serial", method), |b| {
                 b.iter(|| {
                     for pose in &poses {
-                        black_box(model.mesh.buoyancy(black_box(pose), &water, method).unwrap());
+                        black_box(
+                            model
+                                .mesh
+                                .buoyancy(black_box(pose), &water, method)
+                                .unwrap(),
+                        );
                     }
                 })
             });
@@ -32,7 +37,12 @@ fn bench_scalar<T: Real>(c: &mut Criterion, scalar: &str) {
             group.bench_function(BenchmarkId::new("rayon", method), |b| {
                 b.iter(|| {
                     for pose in &poses {
-                        black_box(model.mesh.par_buoyancy(black_box(pose), &water, method).unwrap());
+                        black_box(
+                            model
+                                .mesh
+                                .par_buoyancy(black_box(pose), &water, method)
+                                .unwrap(),
+                        );
                     }
                 })
             });

@@ -29,12 +29,19 @@ use buoyancy::nalgebra::Vector3;
 use buoyancy::{DampingCoefficients, Method, Traversal};
 
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with('-')).collect();
+    let args: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| !a.starts_with('-'))
+        .collect();
     let large = args.iter().any(|a| a == "large");
-    let methods: Vec<Method> = Method::ALL.into_iter().filter(|m| args.iter().any(|a| a == m.name())).collect();
+    let methods: Vec<Method> = Method::ALL
+        .into_iter()
+        .filter(|m| args.iter().any(|a| a == m.name()))
+        .collect();
     let named_damping = args.iter().any(|a| a == "damping");
     // The damping row when asked for, or when no method or traversal is named.
-    let damping = named_damping || (methods.is_empty() && !args.iter().any(|a| a == "scan" || a == "hierarchy"));
+    let damping = named_damping
+        || (methods.is_empty() && !args.iter().any(|a| a == "scan" || a == "hierarchy"));
     let methods = match (methods.is_empty(), named_damping) {
         (true, false) => Method::ALL.to_vec(),
         _ => methods,
@@ -48,19 +55,39 @@ fn main() {
     let parallel = args.iter().any(|a| a == "parallel");
     #[cfg(not(feature = "rayon"))]
     assert!(!parallel, "`parallel` needs --features rayon");
-    let keyword = |a: &str| a == "large" || a == "parallel" || a == "damping" || a == "scan" || a == "hierarchy" || Method::ALL.iter().any(|m| m.name() == a);
+    let keyword = |a: &str| {
+        a == "large"
+            || a == "parallel"
+            || a == "damping"
+            || a == "scan"
+            || a == "hierarchy"
+            || Method::ALL.iter().any(|m| m.name() == a)
+    };
     let names: Vec<&String> = args.iter().filter(|a| !keyword(a)).collect();
     let mut models = common::models::<f64>(large);
     let (v, t) = buoyancy::shape::torus(1.0, 0.25, 200, 75).unwrap();
     let torus = buoyancy::Mesh::new(v, t).expect("valid mesh");
-    models.insert(models.len() - usize::from(large), common::Model { name: "torus 30000".into(), paper_ms: None, mesh: torus });
+    models.insert(
+        models.len() - usize::from(large),
+        common::Model {
+            name: "torus 30000".into(),
+            paper_ms: None,
+            mesh: torus,
+        },
+    );
     let models: Vec<_> = models
         .into_iter()
         .filter(|m| names.is_empty() || names.iter().any(|n| m.name.contains(n.as_str())))
         .collect();
     let water = common::water::<f64>();
-    let rounds: usize = std::env::var("BUOYANCY_ROUNDS").ok().and_then(|r| r.parse().ok()).unwrap_or(15);
-    let pose_count: usize = std::env::var("BUOYANCY_POSES").ok().and_then(|r| r.parse().ok()).unwrap_or(100);
+    let rounds: usize = std::env::var("BUOYANCY_ROUNDS")
+        .ok()
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(15);
+    let pose_count: usize = std::env::var("BUOYANCY_POSES")
+        .ok()
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(100);
     assert!(pose_count >= 2, "BUOYANCY_POSES must be at least 2");
     println!("| model | method | scan µs | hierarchy µs | cut triangles |");
     println!("|---|---|---|---|---|");
@@ -74,46 +101,90 @@ fn main() {
                         for pose in &poses {
                             #[cfg(feature = "rayon")]
                             let result = if parallel {
-                                model.mesh.par_buoyancy_with(black_box(pose), &water, method, traversal)
+                                model.mesh.par_buoyancy_with(
+                                    black_box(pose),
+                                    &water,
+                                    method,
+                                    traversal,
+                                )
                             } else {
-                                model.mesh.buoyancy_with(black_box(pose), &water, method, traversal)
+                                model
+                                    .mesh
+                                    .buoyancy_with(black_box(pose), &water, method, traversal)
                             };
                             #[cfg(not(feature = "rayon"))]
-                            let result = model.mesh.buoyancy_with(black_box(pose), &water, method, traversal);
+                            let result = model.mesh.buoyancy_with(
+                                black_box(pose),
+                                &water,
+                                method,
+                                traversal,
+                            );
                             black_box(result.unwrap());
                         }
                         started.elapsed().as_secs_f64() * 1e6 / poses.len() as f64
                     })
                     .fold(f64::INFINITY, f64::min)
             };
-            let [scan, hierarchy] = [Traversal::Scan, Traversal::Hierarchy]
-                .map(|t| if traversals.contains(&t) { format!("{:.2}", time(t)) } else { "–".into() });
+            let [scan, hierarchy] = [Traversal::Scan, Traversal::Hierarchy].map(|t| {
+                if traversals.contains(&t) {
+                    format!("{:.2}", time(t))
+                } else {
+                    "–".into()
+                }
+            });
             let cut = poses
                 .iter()
-                .map(|pose| model.mesh.buoyancy(pose, &water, method).unwrap().partially_submerged)
+                .map(|pose| {
+                    model
+                        .mesh
+                        .buoyancy(pose, &water, method)
+                        .unwrap()
+                        .partially_submerged
+                })
                 .sum::<usize>() as f64
                 / poses.len() as f64;
-            println!("| {} | {} | {scan} | {hierarchy} | {cut:.0} |", model.name, method.name());
+            println!(
+                "| {} | {} | {scan} | {hierarchy} | {cut:.0} |",
+                model.name,
+                method.name()
+            );
         }
         if damping {
-            let (velocity, omega) = (Vector3::new(1.0, -1.0, 0.0), Vector3::new(0.3, 0.5, 0.8).normalize());
+            let (velocity, omega) = (
+                Vector3::new(1.0, -1.0, 0.0),
+                Vector3::new(0.3, 0.5, 0.8).normalize(),
+            );
             let coefficients = DampingCoefficients::default();
             let time = (0..rounds)
                 .map(|_| {
                     let started = Instant::now();
                     for pose in &poses {
-                        black_box(model.mesh.damping(black_box(pose), &velocity, &omega, &water, &coefficients).unwrap());
+                        black_box(
+                            model
+                                .mesh
+                                .damping(black_box(pose), &velocity, &omega, &water, &coefficients)
+                                .unwrap(),
+                        );
                     }
                     started.elapsed().as_secs_f64() * 1e6 / poses.len() as f64
                 })
                 .fold(f64::INFINITY, f64::min);
             let wetted = poses
                 .iter()
-                .map(|pose| model.mesh.damping(pose, &velocity, &omega, &water, &coefficients).unwrap().wetted_fraction)
+                .map(|pose| {
+                    model
+                        .mesh
+                        .damping(pose, &velocity, &omega, &water, &coefficients)
+                        .unwrap()
+                        .wetted_fraction
+                })
                 .sum::<f64>()
                 / poses.len() as f64
                 * model.mesh.triangle_count() as f64;
-            println!("| {} | damping | – | {time:.2} | {wetted:.0} wetted (area-weighted) |", model.name);
+            println!(
+                "| {} | damping | – | {time:.2} | {wetted:.0} wetted (area-weighted) |",
+                model.name
+            );
         }
     }
 }

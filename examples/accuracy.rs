@@ -12,7 +12,7 @@ use std::f64::consts::PI;
 use std::time::Instant;
 
 use buoyancy::nalgebra::{Translation3, UnitQuaternion, Vector3};
-use buoyancy::{shape, Mesh, Method, Pose, Water};
+use buoyancy::{Mesh, Method, Pose, Water, shape};
 
 struct Case {
     name: String,
@@ -49,19 +49,29 @@ fn main() -> Result<(), buoyancy::Error> {
     println!("|---|---|---|---|---|");
     let started = Instant::now();
     for case in &cases {
-        let heights: Vec<f64> = (1..200).map(|k| case.half_range * (k as f64 / 100.0 - 1.0)).collect();
-        let peak = heights.iter().map(|&h| (case.analytic)(h)).fold(0.0, f64::max);
+        let heights: Vec<f64> = (1..200)
+            .map(|k| case.half_range * (k as f64 / 100.0 - 1.0))
+            .collect();
+        let peak = heights
+            .iter()
+            .map(|&h| (case.analytic)(h))
+            .fold(0.0, f64::max);
         for method in Method::ALL {
             let (mut worst, mut squares) = (0.0f64, 0.0);
             for &h in &heights {
-                let pose = Pose::from_parts(Translation3::new(0.0, h, 0.0), UnitQuaternion::identity());
+                let pose =
+                    Pose::from_parts(Translation3::new(0.0, h, 0.0), UnitQuaternion::identity());
                 let b = case.mesh.buoyancy(&pose, &water, method)?;
                 let error = b.force.y - (case.analytic)(h);
                 worst = worst.max(error.abs());
                 squares += error * error;
             }
             let rms = (squares / heights.len() as f64).sqrt();
-            println!("| {} | {method} | {worst:.3e} | {rms:.3e} | {:.2e} |", case.name, worst / peak);
+            println!(
+                "| {} | {method} | {worst:.3e} | {rms:.3e} | {:.2e} |",
+                case.name,
+                worst / peak
+            );
         }
     }
     println!("\n(computed in {:.2} s)\n", started.elapsed().as_secs_f64());
@@ -75,7 +85,10 @@ fn main() -> Result<(), buoyancy::Error> {
         let pose = Pose::from_parts(Translation3::new(0.0, h, 0.0), UnitQuaternion::identity());
         print!("| {h} | {:.6} |", (sphere.analytic)(h));
         for method in Method::ALL {
-            print!(" {:.6} |", sphere.mesh.buoyancy(&pose, &water, method)?.force.y);
+            print!(
+                " {:.6} |",
+                sphere.mesh.buoyancy(&pose, &water, method)?.force.y
+            );
         }
         println!();
     }

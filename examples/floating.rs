@@ -14,7 +14,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use buoyancy::nalgebra::{Point3, Rotation3, Vector3};
-use buoyancy::{shape, Mesh};
+use buoyancy::{Mesh, shape};
 use buoyancy_rapier::{FloatOptions, FloatingBodies};
 use plotters::prelude::*;
 use rapier3d::prelude::*;
@@ -57,19 +57,38 @@ fn model(file: &str, radius: f64, z_up: bool) -> (String, Mesh<f64>) {
     let (name, (vertices, triangles)) = match loaded {
         Some(shape) => (file.trim_end_matches(".obj").to_string(), shape),
         None => {
-            println!("note: {file} not found (set BUOYANCY_MESHES); using a procedural torus knot instead");
-            ("torus knot (procedural)".to_string(), shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16).unwrap())
+            println!(
+                "note: {file} not found (set BUOYANCY_MESHES); using a procedural torus knot instead"
+            );
+            (
+                "torus knot (procedural)".to_string(),
+                shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16).unwrap(),
+            )
         }
     };
     let mesh = Mesh::new(vertices, triangles).expect("a closed mesh");
     let (center, scale) = (mesh.centroid(), radius / mesh.bounding_radius());
-    let turn = if z_up { Rotation3::from_axis_angle(&Vector3::x_axis(), -std::f64::consts::FRAC_PI_2) } else { Rotation3::identity() };
-    let vertices = (0..mesh.vertex_count()).map(|i| Point3::from(turn * (mesh.vertex(i) - center) * scale)).collect();
-    (name, Mesh::new(vertices, mesh.triangles().to_vec()).expect("a closed mesh"))
+    let turn = if z_up {
+        Rotation3::from_axis_angle(&Vector3::x_axis(), -std::f64::consts::FRAC_PI_2)
+    } else {
+        Rotation3::identity()
+    };
+    let vertices = (0..mesh.vertex_count())
+        .map(|i| Point3::from(turn * (mesh.vertex(i) - center) * scale))
+        .collect();
+    (
+        name,
+        Mesh::new(vertices, mesh.triangles().to_vec()).expect("a closed mesh"),
+    )
 }
 
 fn trimesh_collider(mesh: &Mesh<f64>) -> ColliderBuilder {
-    let vertices = (0..mesh.vertex_count()).map(|i| { let p = mesh.vertex(i); Vector::new(p.x as f32, p.y as f32, p.z as f32) }).collect();
+    let vertices = (0..mesh.vertex_count())
+        .map(|i| {
+            let p = mesh.vertex(i);
+            Vector::new(p.x as f32, p.y as f32, p.z as f32)
+        })
+        .collect();
     ColliderBuilder::trimesh(vertices, mesh.triangles().to_vec()).expect("a valid trimesh")
 }
 
@@ -79,20 +98,29 @@ fn sphere_draft(radius: f64, s: f64) -> f64 {
     let (mut lo, mut hi) = (0.0, 2.0 * radius);
     for _ in 0..100 {
         let d = 0.5 * (lo + hi);
-        if d * d * (3.0 * radius - d) < target { lo = d } else { hi = d }
+        if d * d * (3.0 * radius - d) < target {
+            lo = d
+        } else {
+            hi = d
+        }
     }
     0.5 * (lo + hi)
 }
 
 /// Angle in degrees between the world vertical and the body axis closest to it.
 fn tilt_to_nearest_axis(rotation: &Rotation) -> f64 {
-    let cos = [Vector::X, Vector::Y, Vector::Z].iter().map(|a| (*rotation * *a).y.abs()).fold(0.0f32, f32::max);
+    let cos = [Vector::X, Vector::Y, Vector::Z]
+        .iter()
+        .map(|a| (*rotation * *a).y.abs())
+        .fold(0.0f32, f32::max);
     f64::from(cos.min(1.0)).acos().to_degrees()
 }
 
 /// Angle in degrees between the world vertical and the body's own y axis.
 fn tilt_of_y_axis(rotation: &Rotation) -> f64 {
-    f64::from((*rotation * Vector::Y).y.clamp(-1.0, 1.0)).acos().to_degrees()
+    f64::from((*rotation * Vector::Y).y.clamp(-1.0, 1.0))
+        .acos()
+        .to_degrees()
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -109,29 +137,79 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let (armadillo_name, armadillo) = model("armadillo.obj", 0.6, true);
     let mut lineup: Vec<(String, f64, ColliderBuilder, Mesh<f64>, Theory, u32)> = Vec::new();
     for s in [0.1, 0.5, 0.9] {
-        lineup.push(("cube".into(), s, ColliderBuilder::cuboid(0.5, 0.5, 0.5), cube.clone(), Theory::Cube { side: 1.0 }, 32));
+        lineup.push((
+            "cube".into(),
+            s,
+            ColliderBuilder::cuboid(0.5, 0.5, 0.5),
+            cube.clone(),
+            Theory::Cube { side: 1.0 },
+            32,
+        ));
     }
     for s in [0.3, 0.7] {
         let ball = ColliderBuilder::ball(sphere_radius as f32);
         let (v, t) = shape::uv_sphere::<f64>(sphere_radius, 64, 32)?;
-        lineup.push(("sphere".into(), s, ball, Mesh::new(v, t)?, Theory::Sphere { radius: sphere_radius }, 64));
+        lineup.push((
+            "sphere".into(),
+            s,
+            ball,
+            Mesh::new(v, t)?,
+            Theory::Sphere {
+                radius: sphere_radius,
+            },
+            64,
+        ));
     }
     for s in [0.3, 0.7] {
-        lineup.push((knot_name.clone(), s, trimesh_collider(&knot), knot.clone(), Theory::Model, 0));
+        lineup.push((
+            knot_name.clone(),
+            s,
+            trimesh_collider(&knot),
+            knot.clone(),
+            Theory::Model,
+            0,
+        ));
     }
     for s in [0.4, 0.8] {
-        lineup.push((bunny_name.clone(), s, trimesh_collider(&bunny), bunny.clone(), Theory::Model, 0));
+        lineup.push((
+            bunny_name.clone(),
+            s,
+            trimesh_collider(&bunny),
+            bunny.clone(),
+            Theory::Model,
+            0,
+        ));
     }
-    lineup.push((armadillo_name.clone(), 0.5, trimesh_collider(&armadillo), armadillo.clone(), Theory::Model, 0));
+    lineup.push((
+        armadillo_name.clone(),
+        0.5,
+        trimesh_collider(&armadillo),
+        armadillo.clone(),
+        Theory::Model,
+        0,
+    ));
 
     for (i, (name, s, collider, mesh, theory, subdivisions)) in lineup.into_iter().enumerate() {
         // In a row 3 m apart, dropped from 1 m with a small tilt so that physics picks the attitude.
         let position = Vector::new(3.0 * i as f32, 1.0, 0.0);
         let tilt = Rotation::from_axis_angle(Vector::new(1.0, 0.0, 0.4).normalize(), 0.05);
-        let body = RigidBodyBuilder::dynamic().pose(Pose::from_parts(position, tilt)).can_sleep(false);
+        let body = RigidBodyBuilder::dynamic()
+            .pose(Pose::from_parts(position, tilt))
+            .can_sleep(false);
         let (handle, _) = world.insert(body, collider.density((s * WATER_DENSITY) as f32));
-        water.register(handle, &world.bodies, &world.colliders, FloatOptions::default().subdivisions(subdivisions.max(3)))?;
-        bodies.push(Body { name, density_ratio: s, handle, mesh, theory });
+        water.register(
+            handle,
+            &world.bodies,
+            &world.colliders,
+            FloatOptions::default().subdivisions(subdivisions.max(3)),
+        )?;
+        bodies.push(Body {
+            name,
+            density_ratio: s,
+            handle,
+            mesh,
+            theory,
+        });
     }
 
     // Simulate, recording height of the center of mass and tilt at 10 Hz.
@@ -145,7 +223,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             for (b, points) in bodies.iter().zip(series.iter_mut()) {
                 let rb = &world.bodies[b.handle];
                 let (height, tilt) = (rb.center_of_mass().y, tilt_of_y_axis(rb.rotation()) as f32);
-                writeln!(csv, "{t:.3},{},{},{height:.5},{tilt:.3}", b.name, b.density_ratio)?;
+                writeln!(
+                    csv,
+                    "{t:.3},{},{},{height:.5},{tilt:.3}",
+                    b.name, b.density_ratio
+                )?;
                 points.push((t, height, tilt));
             }
         }
@@ -157,8 +239,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     water.apply(&mut world.bodies, dt);
 
     // The table.
-    println!("{} bodies, {SECONDS} s at {:.0} Hz, method Exact, default damping\n", bodies.len(), 1.0 / dt);
-    println!("| body | s = ρ_body/ρ | submerged fraction | theory | error | draft (m) | theory draft (m) | error (m) | CoB–CoM horizontal (mm) | tilt (°) | attitude | theory |");
+    println!(
+        "{} bodies, {SECONDS} s at {:.0} Hz, method Exact, default damping\n",
+        bodies.len(),
+        1.0 / dt
+    );
+    println!(
+        "| body | s = ρ_body/ρ | submerged fraction | theory | error | draft (m) | theory draft (m) | error (m) | CoB–CoM horizontal (mm) | tilt (°) | attitude | theory |"
+    );
     println!("|---|---|---|---|---|---|---|---|---|---|---|---|");
     let mut worst_fraction_error: f64 = 0.0;
     for b in &bodies {
@@ -169,12 +257,23 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let s = rb.mass() as f64 / WATER_DENSITY / b.mesh.volume();
         worst_fraction_error = worst_fraction_error.max((fraction - s).abs());
         let pose = buoyancy::Pose::from_parts(
-            buoyancy::nalgebra::Translation3::new(rb.translation().x as f64, rb.translation().y as f64, rb.translation().z as f64),
-            buoyancy::nalgebra::UnitQuaternion::from_quaternion(buoyancy::nalgebra::Quaternion::new(
-                rb.rotation().w as f64, rb.rotation().x as f64, rb.rotation().y as f64, rb.rotation().z as f64,
-            )),
+            buoyancy::nalgebra::Translation3::new(
+                rb.translation().x as f64,
+                rb.translation().y as f64,
+                rb.translation().z as f64,
+            ),
+            buoyancy::nalgebra::UnitQuaternion::from_quaternion(
+                buoyancy::nalgebra::Quaternion::new(
+                    rb.rotation().w as f64,
+                    rb.rotation().x as f64,
+                    rb.rotation().y as f64,
+                    rb.rotation().z as f64,
+                ),
+            ),
         );
-        let draft = (0..b.mesh.vertex_count()).map(|i| -(pose * b.mesh.vertex(i)).y).fold(f64::MIN, f64::max);
+        let draft = (0..b.mesh.vertex_count())
+            .map(|i| -(pose * b.mesh.vertex(i)).y)
+            .fold(f64::MIN, f64::max);
         let offset = report.center_of_buoyancy - report.center_of_mass;
         let horizontal_mm = Vector3::new(offset.x, 0.0, offset.z).norm() * 1000.0;
         let tilt = tilt_to_nearest_axis(rb.rotation());
@@ -186,7 +285,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let (theory_draft, theory_attitude) = match b.theory {
             Theory::Cube { side } => {
                 let gm = s / 2.0 + 1.0 / (12.0 * s) - 0.5;
-                if gm > 0.0 { (Some(s * side), "upright") } else { (None, "tipped") }
+                if gm > 0.0 {
+                    (Some(s * side), "upright")
+                } else {
+                    (None, "tipped")
+                }
             }
             Theory::Sphere { radius } => (Some(sphere_draft(radius, s)), "—"),
             Theory::Model => (None, "—"),
@@ -197,7 +300,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         };
         println!(
             "| {} | {:.2} | {:.5} | {:.5} | {:+.1e} | {:.4} | {} | {} | {:.2} | {:.1} | {} | {} |",
-            b.name, b.density_ratio, fraction, s, fraction - s, draft, theory_draft_text, draft_error_text, horizontal_mm, tilt, attitude, theory_attitude
+            b.name,
+            b.density_ratio,
+            fraction,
+            s,
+            fraction - s,
+            draft,
+            theory_draft_text,
+            draft_error_text,
+            horizontal_mm,
+            tilt,
+            attitude,
+            theory_attitude
         );
     }
     println!("\nlargest |submerged fraction − relative density|: {worst_fraction_error:.1e}");
@@ -207,20 +321,42 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all(&out)?;
     std::fs::write(out.join("floating.csv"), csv)?;
     let png = out.join("floating.png");
-    let names: Vec<String> = bodies.iter().map(|b| format!("{}, s = {}", b.name, b.density_ratio)).collect();
+    let names: Vec<String> = bodies
+        .iter()
+        .map(|b| format!("{}, s = {}", b.name, b.density_ratio))
+        .collect();
     plot(&png, &series, &names)?;
-    println!("wrote {} and {}", out.join("floating.csv").display(), png.display());
-    println!("plot colours, in the table's order: {}", PALETTE_NAMES[..bodies.len().min(PALETTE_NAMES.len())].join(", "));
+    println!(
+        "wrote {} and {}",
+        out.join("floating.csv").display(),
+        png.display()
+    );
+    println!(
+        "plot colours, in the table's order: {}",
+        PALETTE_NAMES[..bodies.len().min(PALETTE_NAMES.len())].join(", ")
+    );
     println!("finished in {:.1} s", started.elapsed().as_secs_f64());
     Ok(())
 }
 
 const PALETTE: [RGBColor; 12] = [
-    RGBColor(230, 25, 75), RGBColor(60, 180, 75), RGBColor(0, 130, 200), RGBColor(245, 130, 48),
-    RGBColor(145, 30, 180), RGBColor(70, 240, 240), RGBColor(240, 50, 230), RGBColor(128, 128, 0),
-    RGBColor(0, 128, 128), RGBColor(170, 110, 40), RGBColor(128, 0, 0), RGBColor(0, 0, 128),
+    RGBColor(230, 25, 75),
+    RGBColor(60, 180, 75),
+    RGBColor(0, 130, 200),
+    RGBColor(245, 130, 48),
+    RGBColor(145, 30, 180),
+    RGBColor(70, 240, 240),
+    RGBColor(240, 50, 230),
+    RGBColor(128, 128, 0),
+    RGBColor(0, 128, 128),
+    RGBColor(170, 110, 40),
+    RGBColor(128, 0, 0),
+    RGBColor(0, 0, 128),
 ];
-const PALETTE_NAMES: [&str; 12] = ["red", "green", "blue", "orange", "purple", "cyan", "magenta", "olive", "teal", "brown", "maroon", "navy"];
+const PALETTE_NAMES: [&str; 12] = [
+    "red", "green", "blue", "orange", "purple", "cyan", "magenta", "olive", "teal", "brown",
+    "maroon", "navy",
+];
 
 /// Pixel sizes of the plot: the image, the legend column on the right, the title band and
 /// each panel's margins around its chart (for its caption, tick labels and axis titles).
@@ -232,8 +368,12 @@ const MARGIN: (i32, i32, i32, i32) = (34, 44, 40, 112); // top, right, bottom, l
 /// Two panels sharing the time axis: top, the height of each center of mass over time (the
 /// black line is the water surface); bottom, the tilt of each body's y axis, 0–180°. The legend
 /// names the bodies in the table's order. Text is drawn with the built-in bitmap font.
-fn plot(path: &std::path::Path, series: &[Vec<(f32, f32, f32)>], names: &[String]) -> Result<(), Box<dyn std::error::Error>> {
-    use plot_text::{draw, Style};
+fn plot(
+    path: &std::path::Path,
+    series: &[Vec<(f32, f32, f32)>],
+    names: &[String],
+) -> Result<(), Box<dyn std::error::Error>> {
+    use plot_text::{Style, draw};
     use plotters::style::text_anchor::{HPos, VPos};
 
     let root = BitMapBackend::new(path, SIZE).into_drawing_area();
@@ -247,13 +387,29 @@ fn plot(path: &std::path::Path, series: &[Vec<(f32, f32, f32)>], names: &[String
     let heights = series.iter().flatten().map(|p| p.1);
     let (lo, hi) = heights.fold((0.0f32, 0.0f32), |(lo, hi), h| (lo.min(h), hi.max(h)));
     let panels = [
-        (&top, (lo - 0.1)..(hi + 0.1), 1usize, "Height of each body's center of mass (black: the water surface)", "height (m)"),
-        (&bottom, -5.0f32..185.0, 2usize, "Tilt of each body's own y axis from the vertical", "tilt (°)"),
+        (
+            &top,
+            (lo - 0.1)..(hi + 0.1),
+            1usize,
+            "Height of each body's center of mass (black: the water surface)",
+            "height (m)",
+        ),
+        (
+            &bottom,
+            -5.0f32..185.0,
+            2usize,
+            "Tilt of each body's own y axis from the vertical",
+            "tilt (°)",
+        ),
     ];
     let mut plot_left = 0;
     for (area, range, pick, caption, y_title) in panels {
         let (top_margin, right, bottom_margin, left) = MARGIN;
-        let bottom_margin = if pick == 2 { bottom_margin + 26 } else { bottom_margin };
+        let bottom_margin = if pick == 2 {
+            bottom_margin + 26
+        } else {
+            bottom_margin
+        };
         let mut chart = ChartBuilder::on(area)
             .margin_top(top_margin)
             .margin_right(right)
@@ -265,40 +421,84 @@ fn plot(path: &std::path::Path, series: &[Vec<(f32, f32, f32)>], names: &[String
         plot_left = x0;
 
         // Grid, ticks and their labels: every 5 s; heights every "nice" step, tilt every 45°.
-        let (y_ticks, decimals) = if pick == 1 { nice_ticks(range.clone(), 7) } else { ((0..=4).map(|i| 45.0 * i as f32).collect(), 0) };
+        let (y_ticks, decimals) = if pick == 1 {
+            nice_ticks(range.clone(), 7)
+        } else {
+            ((0..=4).map(|i| 45.0 * i as f32).collect(), 0)
+        };
         for t in (0..=SECONDS as i32).step_by(5) {
             let t = t as f32;
             chart.draw_series(LineSeries::new([(t, range.start), (t, range.end)], grey))?;
             let (x, _) = chart.backend_coord(&(t, range.start));
             root.draw(&PathElement::new([(x, y1), (x, y1 + 5)], BLACK))?;
-            draw(&root, &format!("{t}"), (x, y1 + 10), text.anchor(HPos::Center, VPos::Top))?;
+            draw(
+                &root,
+                &format!("{t}"),
+                (x, y1 + 10),
+                text.anchor(HPos::Center, VPos::Top),
+            )?;
         }
         for &v in &y_ticks {
             chart.draw_series(LineSeries::new([(0.0, v), (SECONDS, v)], grey))?;
             let (_, y) = chart.backend_coord(&(0.0, v));
             root.draw(&PathElement::new([(x0 - 5, y), (x0, y)], BLACK))?;
             let label = format!("{v:.decimals$}").replace('-', "−");
-            let label = if pick == 2 { format!("{label}°") } else { label };
-            draw(&root, &label, (x0 - 10, y), text.anchor(HPos::Right, VPos::Center))?;
+            let label = if pick == 2 {
+                format!("{label}°")
+            } else {
+                label
+            };
+            draw(
+                &root,
+                &label,
+                (x0 - 10, y),
+                text.anchor(HPos::Right, VPos::Center),
+            )?;
         }
-        draw(&root, caption, (x0, y0 - 12), text.anchor(HPos::Left, VPos::Bottom))?;
-        draw(&root, y_title, (x0 - 78, (y0 + y1) / 2), text.anchor(HPos::Center, VPos::Top).up())?;
+        draw(
+            &root,
+            caption,
+            (x0, y0 - 12),
+            text.anchor(HPos::Left, VPos::Bottom),
+        )?;
+        draw(
+            &root,
+            y_title,
+            (x0 - 78, (y0 + y1) / 2),
+            text.anchor(HPos::Center, VPos::Top).up(),
+        )?;
         if pick == 2 {
-            draw(&root, "time (s)", ((x0 + x1) / 2, y1 + 36), text.anchor(HPos::Center, VPos::Top))?;
+            draw(
+                &root,
+                "time (s)",
+                ((x0 + x1) / 2, y1 + 36),
+                text.anchor(HPos::Center, VPos::Top),
+            )?;
         }
 
         let zero = if pick == 1 { 0.0 } else { 90.0 };
-        chart.draw_series(LineSeries::new([(0.0, zero), (SECONDS, zero)], BLACK.stroke_width(1)))?;
+        chart.draw_series(LineSeries::new(
+            [(0.0, zero), (SECONDS, zero)],
+            BLACK.stroke_width(1),
+        ))?;
         for (i, points) in series.iter().enumerate() {
             let colour = PALETTE[i % PALETTE.len()];
-            chart.draw_series(LineSeries::new(points.iter().map(|p| (p.0, if pick == 1 { p.1 } else { p.2 })), colour.stroke_width(2)))?;
+            chart.draw_series(LineSeries::new(
+                points
+                    .iter()
+                    .map(|p| (p.0, if pick == 1 { p.1 } else { p.2 })),
+                colour.stroke_width(2),
+            ))?;
         }
         root.draw(&Rectangle::new([(x0, y0), (x1, y1)], BLACK))?;
     }
 
     draw(
         &root,
-        &format!("{} bodies dropped into still water in rapier3d, buoyancy by the Exact method", series.len()),
+        &format!(
+            "{} bodies dropped into still water in rapier3d, buoyancy by the Exact method",
+            series.len()
+        ),
         (plot_left, TITLE_HEIGHT as i32 - 6),
         Style::new(3, BLACK).anchor(HPos::Left, VPos::Bottom),
     )?;
@@ -311,7 +511,10 @@ fn plot(path: &std::path::Path, series: &[Vec<(f32, f32, f32)>], names: &[String
     y += 58;
     for (i, name) in names.iter().enumerate() {
         let colour = PALETTE[i % PALETTE.len()];
-        root.draw(&PathElement::new([(lx, y + 7), (lx + 28, y + 7)], colour.stroke_width(4)))?;
+        root.draw(&PathElement::new(
+            [(lx, y + 7), (lx + 28, y + 7)],
+            colour.stroke_width(4),
+        ))?;
         for line in plot_text::wrap(name, (LEGEND_WIDTH as i32 - 58) / text.scale) {
             draw(&root, &line, (lx + 38, y), text)?;
             y += 22;
@@ -325,9 +528,22 @@ fn plot(path: &std::path::Path, series: &[Vec<(f32, f32, f32)>], names: &[String
 /// Tick values inside `range`: multiples of the smallest of 0.1, 0.2, 0.25, 0.5, 1, 2, 2.5, 5…
 /// giving at most `most` ticks, and the decimals they need.
 fn nice_ticks(range: std::ops::Range<f32>, most: usize) -> (Vec<f32>, usize) {
-    let steps = [(0.1, 1), (0.2, 1), (0.25, 2), (0.5, 1), (1.0, 0), (2.0, 0), (2.5, 1), (5.0, 0), (10.0, 0)];
+    let steps = [
+        (0.1, 1),
+        (0.2, 1),
+        (0.25, 2),
+        (0.5, 1),
+        (1.0, 0),
+        (2.0, 0),
+        (2.5, 1),
+        (5.0, 0),
+        (10.0, 0),
+    ];
     for (step, decimals) in steps {
-        let ticks: Vec<f32> = ((range.start / step).ceil() as i32..=(range.end / step).floor() as i32).map(|k| k as f32 * step).collect();
+        let ticks: Vec<f32> = ((range.start / step).ceil() as i32
+            ..=(range.end / step).floor() as i32)
+            .map(|k| k as f32 * step)
+            .collect();
         if ticks.len() <= most {
             return (ticks, decimals);
         }

@@ -7,7 +7,7 @@ mod common;
 use std::f64::consts::PI;
 
 use buoyancy::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy::{shape, Mesh, Method, Pose, Water};
+use buoyancy::{Mesh, Method, Pose, Water, shape};
 use common::{assert_close, assert_close_v, reference};
 
 /// ρ = g = 1, y up, surface at y = 0.
@@ -65,10 +65,22 @@ fn exact_methods_follow_the_cube_curve() {
                 let what = format!("{method}, {} triangles, h = {h}", 12 * n * n);
                 assert_close(&what, b.force.y, 0.5 - h, 1e-12, 1.0);
                 assert_close(&what, b.submerged_volume, 0.5 - h, 1e-12, 1.0);
-                assert_close_v(&what, &b.force, &Vector3::new(0.0, 0.5 - h, 0.0), 1e-12, 1.0);
+                assert_close_v(
+                    &what,
+                    &b.force,
+                    &Vector3::new(0.0, 0.5 - h, 0.0),
+                    1e-12,
+                    1.0,
+                );
                 // The submerged box spans y ∈ [h − 1/2, 0].
                 let center = Point3::new(0.0, (h - 0.5) / 2.0, 0.0);
-                assert_close_v(&what, &b.center_of_buoyancy.coords, &center.coords, 1e-12, 1.0);
+                assert_close_v(
+                    &what,
+                    &b.center_of_buoyancy.coords,
+                    &center.coords,
+                    1e-12,
+                    1.0,
+                );
                 assert_close_v(&what, &b.torque, &Vector3::zeros(), 1e-12, 1.0);
             }
         }
@@ -100,7 +112,13 @@ fn exact_methods_follow_the_sphere_curve_within_the_discretization() {
                 );
                 assert_close(&what, f, independent.force.y, 1e-12, 4.0);
                 assert_close(&what, b.submerged_volume, independent.volume, 1e-12, 4.0);
-                assert_close_v(&what, &b.center_of_buoyancy.coords, &independent.center.coords, 1e-12, 1.0);
+                assert_close_v(
+                    &what,
+                    &b.center_of_buoyancy.coords,
+                    &independent.center.coords,
+                    1e-12,
+                    1.0,
+                );
                 assert_close_v(&what, &b.torque, &independent.torque, 1e-12, 4.0);
             }
         }
@@ -132,7 +150,14 @@ fn fast_error_persists_and_improved_error_shrinks_with_resolution() {
     type Case<'a> = (&'a str, Mesh<f64>, Mesh<f64>, Curve<'a>, Curve<'a>, f64);
     let cases: [Case; 2] = [
         ("cube", cube(10), cube(100), &cube_curve, &cube_cone, 1.0),
-        ("sphere", sphere(50), sphere(200), &sphere_curve, &sphere_cone, 2.0),
+        (
+            "sphere",
+            sphere(50),
+            sphere(200),
+            &sphere_curve,
+            &sphere_cone,
+            2.0,
+        ),
     ];
     for (name, coarse, fine, curve, cone, range) in cases {
         let fast = [&coarse, &fine].map(|m| worst_error(m, Method::Fast, curve, range));
@@ -140,11 +165,23 @@ fn fast_error_persists_and_improved_error_shrinks_with_resolution() {
         let cone_limit = heights(range).map(cone).fold(0.0, f64::max);
         eprintln!("{name}: Fast {fast:?} (cone {cone_limit}), Improved {improved:?}");
         // Fast: at both resolutions at least the cone, and on the fine mesh close to it.
-        assert!(fast[0] >= cone_limit && fast[1] >= 0.98 * cone_limit, "{name} Fast: {fast:?}");
-        assert!(fast[1] <= 1.05 * cone_limit, "{name} Fast: {fast:?} vs cone {cone_limit}");
+        assert!(
+            fast[0] >= cone_limit && fast[1] >= 0.98 * cone_limit,
+            "{name} Fast: {fast:?}"
+        );
+        assert!(
+            fast[1] <= 1.05 * cone_limit,
+            "{name} Fast: {fast:?} vs cone {cone_limit}"
+        );
         // Improved: shrinks with the triangles (10× smaller for the cube, 4× for the sphere).
-        assert!(improved[1] < 0.3 * improved[0], "{name} Improved: {improved:?}");
-        assert!(improved[1] < 0.1 * fast[1], "{name}: Improved {improved:?} vs Fast {fast:?}");
+        assert!(
+            improved[1] < 0.3 * improved[0],
+            "{name} Improved: {improved:?}"
+        );
+        assert!(
+            improved[1] < 0.1 * fast[1],
+            "{name}: Improved {improved:?} vs Fast {fast:?}"
+        );
     }
 }
 
@@ -156,7 +193,13 @@ fn all_methods_agree_when_fully_submerged() {
         for method in Method::ALL {
             let b = mesh.buoyancy(&at_height(-1.5), &water, method).unwrap();
             assert_close(method.name(), b.submerged_volume, mesh.volume(), 1e-12, 1.0);
-            assert_close_v(method.name(), &b.center_of_buoyancy.coords, &Vector3::new(0.0, -1.5, 0.0), 1e-12, 1.0);
+            assert_close_v(
+                method.name(),
+                &b.center_of_buoyancy.coords,
+                &Vector3::new(0.0, -1.5, 0.0),
+                1e-12,
+                1.0,
+            );
             assert_close_v(method.name(), &b.torque, &Vector3::zeros(), 1e-12, 1.0);
             assert_eq!(b.fully_submerged, mesh.triangle_count());
         }

@@ -4,7 +4,7 @@
 mod common;
 
 use buoyancy::nalgebra::{Translation3, UnitQuaternion, Vector3};
-use buoyancy::{shape, Error, Mesh, Method, Pose, Traversal, Water};
+use buoyancy::{Error, Mesh, Method, Pose, Traversal, Water, shape};
 use common::{meshes_dir, shared_meshes};
 
 fn load(name: &str) -> Option<shape::Shape<f64>> {
@@ -14,7 +14,9 @@ fn load(name: &str) -> Option<shape::Shape<f64>> {
 
 #[test]
 fn armadillo_is_stored_inward_and_is_flipped() {
-    let Some((v, t)) = load("armadillo.obj") else { return };
+    let Some((v, t)) = load("armadillo.obj") else {
+        return;
+    };
     let mesh = Mesh::new(v, t).unwrap();
     assert!(mesh.was_reoriented());
     // The README's signed volume is -1.902: flipped, it is positive.
@@ -26,7 +28,9 @@ fn armadillo_is_stored_inward_and_is_flipped() {
 
 #[test]
 fn zero_area_triangles_are_accepted() {
-    let Some((v, t)) = load("2-tori.obj") else { return };
+    let Some((v, t)) = load("2-tori.obj") else {
+        return;
+    };
     let degenerate = t
         .iter()
         .filter(|t| {
@@ -36,19 +40,26 @@ fn zero_area_triangles_are_accepted() {
         .count();
     assert_eq!(degenerate, 12);
     let mesh = Mesh::new(v, t).unwrap();
-    let b = mesh.buoyancy(&Pose::identity(), &Water::default(), Method::Exact).unwrap();
+    let b = mesh
+        .buoyancy(&Pose::identity(), &Water::default(), Method::Exact)
+        .unwrap();
     assert!(b.submerged_volume.is_finite() && b.submerged_volume > 0.0);
 }
 
 #[test]
 fn broken_shared_meshes_are_rejected_with_the_culprit() {
-    let Some((v, t)) = load("bunny.obj") else { return };
+    let Some((v, t)) = load("bunny.obj") else {
+        return;
+    };
     // A hole: drop triangle 100.
     let mut holed = t.clone();
     let removed = holed.remove(100);
     match Mesh::new(v.clone(), holed).unwrap_err() {
         Error::OpenEdge { edge, .. } => {
-            assert!(edge.iter().all(|i| removed.contains(i)), "{edge:?} not in {removed:?}")
+            assert!(
+                edge.iter().all(|i| removed.contains(i)),
+                "{edge:?} not in {removed:?}"
+            )
         }
         e => panic!("{e}"),
     }
@@ -63,7 +74,11 @@ fn broken_shared_meshes_are_rejected_with_the_culprit() {
     let mut doubled = t.clone();
     doubled.push(t[7]);
     match Mesh::new(v.clone(), doubled).unwrap_err() {
-        Error::NonManifoldEdge { triangle_count, triangles, .. } => {
+        Error::NonManifoldEdge {
+            triangle_count,
+            triangles,
+            ..
+        } => {
             assert_eq!(triangle_count, 3);
             assert!(triangles.contains(&7) || triangles.contains(&t.len()));
         }
@@ -72,10 +87,16 @@ fn broken_shared_meshes_are_rejected_with_the_culprit() {
     // A NaN coordinate.
     let mut nan = v.clone();
     nan[10].z = f64::NAN;
-    assert_eq!(Mesh::new(nan, t.clone()).unwrap_err(), Error::NonFiniteVertex { vertex: 10 });
+    assert_eq!(
+        Mesh::new(nan, t.clone()).unwrap_err(),
+        Error::NonFiniteVertex { vertex: 10 }
+    );
     let mut inf = v;
     inf[3].x = f64::NEG_INFINITY;
-    assert_eq!(Mesh::new(inf, t).unwrap_err(), Error::NonFiniteVertex { vertex: 3 });
+    assert_eq!(
+        Mesh::new(inf, t).unwrap_err(),
+        Error::NonFiniteVertex { vertex: 3 }
+    );
 }
 
 #[test]
@@ -89,7 +110,9 @@ fn water_parameters_are_checked() {
         Water::new(1000.0, 9.81, Vector3::new(0.0, f64::NAN, 0.0), 0.0),
         Water::new(1000.0, 9.81, Vector3::y(), f64::INFINITY),
     ];
-    let names = ["density", "density", "gravity", "gravity", "normal", "normal", "level"];
+    let names = [
+        "density", "density", "gravity", "gravity", "normal", "normal", "level",
+    ];
     for (w, name) in bad.iter().zip(names) {
         match w {
             Err(Error::InvalidWater { parameter, .. }) => assert_eq!(*parameter, name),
@@ -100,7 +123,10 @@ fn water_parameters_are_checked() {
     let w = Water::new(1000.0, 0.0, Vector3::new(0.0, 0.0, 3.0), 1.0).unwrap();
     assert_eq!(w.normal().into_inner(), Vector3::z());
     let (v, t) = shape::cube::<f64>(1).unwrap();
-    let b = Mesh::new(v, t).unwrap().buoyancy(&Pose::identity(), &w, Method::Exact).unwrap();
+    let b = Mesh::new(v, t)
+        .unwrap()
+        .buoyancy(&Pose::identity(), &w, Method::Exact)
+        .unwrap();
     assert_eq!(b.force, Vector3::zeros());
     assert_eq!(b.submerged_volume, 1.0);
 }
@@ -110,15 +136,24 @@ fn method_names_round_trip() {
     for m in Method::ALL {
         assert_eq!(m.name().parse::<Method>().unwrap(), m);
     }
-    assert_eq!("Exact-Surface".parse::<Method>().unwrap(), Method::ExactSurface);
+    assert_eq!(
+        "Exact-Surface".parse::<Method>().unwrap(),
+        Method::ExactSurface
+    );
     let e = "precise".parse::<Method>().unwrap_err();
     assert!(e.to_string().contains("fast_surface"), "{e}");
 }
 
 #[test]
 fn missing_or_unknown_files_are_errors() {
-    assert!(matches!(buoyancy::io::load::<f64>("/nonexistent/x.obj"), Err(Error::Io { .. })));
-    assert!(matches!(buoyancy::io::load::<f64>("mesh.ply"), Err(Error::Io { .. })));
+    assert!(matches!(
+        buoyancy::io::load::<f64>("/nonexistent/x.obj"),
+        Err(Error::Io { .. })
+    ));
+    assert!(matches!(
+        buoyancy::io::load::<f64>("mesh.ply"),
+        Err(Error::Io { .. })
+    ));
 }
 
 /// f32 follows f64 to single precision, including far from the origin of the mesh frame.
@@ -128,10 +163,16 @@ fn f32_matches_f64() {
     let offset = Vector3::new(100.0, -50.0, 20.0);
     let v64: Vec<_> = v.iter().map(|p| p + offset).collect();
     let v32: Vec<_> = v64.iter().map(|p| p.map(|c| c as f32)).collect();
-    let (m64, m32) = (Mesh::new(v64, t.clone()).unwrap(), Mesh::<f32>::new(v32, t).unwrap());
+    let (m64, m32) = (
+        Mesh::new(v64, t.clone()).unwrap(),
+        Mesh::<f32>::new(v32, t).unwrap(),
+    );
     for h in [-1.2, -0.5, 0.0, 0.3, 0.99] {
         let rot = UnitQuaternion::from_euler_angles(0.4, 0.1, -0.3);
-        let p64 = Pose::from_parts(Translation3::from(Vector3::new(0.0, h, 0.0) - rot * offset), rot);
+        let p64 = Pose::from_parts(
+            Translation3::from(Vector3::new(0.0, h, 0.0) - rot * offset),
+            rot,
+        );
         let p32 = p64.cast::<f32>();
         for method in Method::ALL {
             let a = m64.buoyancy(&p64, &Water::default(), method).unwrap();
@@ -141,10 +182,21 @@ fn f32_matches_f64() {
             let dc = (a.center_of_buoyancy - b.center_of_buoyancy.cast::<f64>()).norm();
             assert!(dc < 1e-4, "{method}, h = {h}: center off by {dc:e}");
             // In f32 too, the hierarchy classifies every triangle as the scan does.
-            let scan = m32.buoyancy_with(&p32, &Water::default(), method, Traversal::Scan).unwrap();
-            let walk = m32.buoyancy_with(&p32, &Water::default(), method, Traversal::Hierarchy).unwrap();
-            assert_eq!((scan.fully_submerged, scan.partially_submerged), (walk.fully_submerged, walk.partially_submerged), "{method}, h = {h}");
-            assert!((scan.submerged_volume - walk.submerged_volume).abs() < 1e-5 * m32.volume(), "{method}, h = {h}");
+            let scan = m32
+                .buoyancy_with(&p32, &Water::default(), method, Traversal::Scan)
+                .unwrap();
+            let walk = m32
+                .buoyancy_with(&p32, &Water::default(), method, Traversal::Hierarchy)
+                .unwrap();
+            assert_eq!(
+                (scan.fully_submerged, scan.partially_submerged),
+                (walk.fully_submerged, walk.partially_submerged),
+                "{method}, h = {h}"
+            );
+            assert!(
+                (scan.submerged_volume - walk.submerged_volume).abs() < 1e-5 * m32.volume(),
+                "{method}, h = {h}"
+            );
         }
     }
 }
@@ -154,7 +206,10 @@ fn traversal_names_round_trip() {
     for t in Traversal::ALL {
         assert_eq!(t.name().parse::<Traversal>().unwrap(), t);
     }
-    assert_eq!("Hierarchy".parse::<Traversal>().unwrap(), Traversal::Hierarchy);
+    assert_eq!(
+        "Hierarchy".parse::<Traversal>().unwrap(),
+        Traversal::Hierarchy
+    );
     let e = "bvh".parse::<Traversal>().unwrap_err();
     assert!(e.to_string().contains("auto, scan, hierarchy"), "{e}");
 }

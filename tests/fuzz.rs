@@ -5,7 +5,7 @@
 mod common;
 
 use buoyancy::nalgebra::{Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
-use buoyancy::{shape, Mesh, Method, Pose, Water};
+use buoyancy::{Mesh, Method, Pose, Water, shape};
 use proptest::prelude::*;
 
 fn coordinate() -> impl Strategy<Value = f64> {

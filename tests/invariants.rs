@@ -8,7 +8,7 @@
 mod common;
 
 use buoyancy::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy::{shape, Buoyancy, Mesh, Method, Pose, Traversal, Water};
+use buoyancy::{Buoyancy, Mesh, Method, Pose, Traversal, Water, shape};
 use common::{all_meshes, assert_close, assert_close_v, pose, pose_at_height, reference};
 use proptest::prelude::*;
 use proptest::sample::Index;
@@ -33,19 +33,39 @@ fn scales(mesh: &Mesh<f64>, water: &Water<f64>) -> Scales {
 
 #[track_caller]
 fn assert_same(what: &str, a: &Buoyancy<f64>, b: &Buoyancy<f64>, s: &Scales, tol: f64) {
-    assert_close(&format!("{what}: volume"), a.submerged_volume, b.submerged_volume, tol, s.volume);
+    assert_close(
+        &format!("{what}: volume"),
+        a.submerged_volume,
+        b.submerged_volume,
+        tol,
+        s.volume,
+    );
     assert_close_v(&format!("{what}: force"), &a.force, &b.force, tol, s.force);
-    assert_close_v(&format!("{what}: torque"), &a.torque, &b.torque, tol, s.torque);
+    assert_close_v(
+        &format!("{what}: torque"),
+        &a.torque,
+        &b.torque,
+        tol,
+        s.torque,
+    );
     if a.submerged_volume.abs() > 1e-9 * s.volume {
         // The center of a sliver is defined only up to round-off over its volume.
         let tol = tol * s.volume / a.submerged_volume.abs();
-        assert_close_v(&format!("{what}: center"), &a.center_of_buoyancy.coords, &b.center_of_buoyancy.coords, tol, s.length);
+        assert_close_v(
+            &format!("{what}: center"),
+            &a.center_of_buoyancy.coords,
+            &b.center_of_buoyancy.coords,
+            tol,
+            s.length,
+        );
     }
 }
 
 /// The water upside down: what was above the surface is now below it.
 fn flipped(water: &Water<f64>) -> Water<f64> {
-    water.with_surface(-water.normal().into_inner(), -water.level()).unwrap()
+    water
+        .with_surface(-water.normal().into_inner(), -water.level())
+        .unwrap()
 }
 
 fn check_exact_invariants(name: &str, mesh: &Mesh<f64>, pose: &Pose<f64>, water: &Water<f64>) {
@@ -54,28 +74,76 @@ fn check_exact_invariants(name: &str, mesh: &Mesh<f64>, pose: &Pose<f64>, water:
     let surface = mesh.buoyancy(pose, water, Method::ExactSurface).unwrap();
 
     // Exact = Exact Surface for a flat plane.
-    assert_same(&format!("{name}: exact vs exact surface"), &exact, &surface, &s, 1e-12);
+    assert_same(
+        &format!("{name}: exact vs exact surface"),
+        &exact,
+        &surface,
+        &s,
+        1e-12,
+    );
     assert_eq!(exact.fully_submerged, surface.fully_submerged);
     assert_eq!(exact.partially_submerged, surface.partially_submerged);
 
     // Against the independent clip.
     let r = reference(mesh, pose, water);
-    assert_close(&format!("{name}: volume vs reference"), exact.submerged_volume, r.volume, 1e-12, s.volume);
-    assert_close_v(&format!("{name}: force vs reference"), &surface.force, &r.force, 1e-12, s.force);
-    assert_close_v(&format!("{name}: torque vs reference"), &surface.torque, &r.torque, 1e-12, s.torque);
-    assert_close_v(&format!("{name}: torque vs reference"), &exact.torque, &r.torque, 1e-12, s.torque);
+    assert_close(
+        &format!("{name}: volume vs reference"),
+        exact.submerged_volume,
+        r.volume,
+        1e-12,
+        s.volume,
+    );
+    assert_close_v(
+        &format!("{name}: force vs reference"),
+        &surface.force,
+        &r.force,
+        1e-12,
+        s.force,
+    );
+    assert_close_v(
+        &format!("{name}: torque vs reference"),
+        &surface.torque,
+        &r.torque,
+        1e-12,
+        s.torque,
+    );
+    assert_close_v(
+        &format!("{name}: torque vs reference"),
+        &exact.torque,
+        &r.torque,
+        1e-12,
+        s.torque,
+    );
     if r.volume > 1e-9 * s.volume {
         let tol = 1e-12 * s.volume / r.volume;
-        assert_close_v(&format!("{name}: center vs reference"), &exact.center_of_buoyancy.coords, &r.center.coords, tol, s.length);
+        assert_close_v(
+            &format!("{name}: center vs reference"),
+            &exact.center_of_buoyancy.coords,
+            &r.center.coords,
+            tol,
+            s.length,
+        );
     }
 
     // Below + above = whole, for volume and first moment.
     let above = mesh.buoyancy(pose, &flipped(water), Method::Exact).unwrap();
-    assert_close(&format!("{name}: V below + V above"), exact.submerged_volume + above.submerged_volume, mesh.volume(), 1e-12, s.volume);
+    assert_close(
+        &format!("{name}: V below + V above"),
+        exact.submerged_volume + above.submerged_volume,
+        mesh.volume(),
+        1e-12,
+        s.volume,
+    );
     let com = pose * mesh.centroid();
     let moments = (exact.center_of_buoyancy - com) * exact.submerged_volume
         + (above.center_of_buoyancy - com) * above.submerged_volume;
-    assert_close_v(&format!("{name}: V_b·C_b + V_a·C_a"), &moments, &Vector3::zeros(), 1e-12, s.volume * s.length);
+    assert_close_v(
+        &format!("{name}: V_b·C_b + V_a·C_a"),
+        &moments,
+        &Vector3::zeros(),
+        1e-12,
+        s.volume * s.length,
+    );
 }
 
 /// A star-shaped, non-convex closed mesh: a UV sphere whose vertices are moved to the given radii.
@@ -96,10 +164,12 @@ fn unit3() -> impl Strategy<Value = [f64; 3]> {
 }
 
 fn water_strategy() -> impl Strategy<Value = Water<f64>> {
-    (500.0..1500.0f64, 1.0..20.0f64, unit3(), -3.0..3.0f64).prop_map(|(density, gravity, u, level)| {
-        let normal = pose(Vector3::zeros(), u).rotation * Vector3::y();
-        Water::new(density, gravity, normal, level).unwrap()
-    })
+    (500.0..1500.0f64, 1.0..20.0f64, unit3(), -3.0..3.0f64).prop_map(
+        |(density, gravity, u, level)| {
+            let normal = pose(Vector3::zeros(), u).rotation * Vector3::y();
+            Water::new(density, gravity, normal, level).unwrap()
+        },
+    )
 }
 
 /// Heights of the centroid (in bounding radii) from fully under to fully above the surface.
@@ -274,10 +344,24 @@ proptest! {
 fn check_strategies(name: &str, mesh: &Mesh<f64>, pose: &Pose<f64>, water: &Water<f64>) {
     let s = scales(mesh, water);
     for method in Method::ALL {
-        let scan = mesh.buoyancy_with(pose, water, method, Traversal::Scan).unwrap();
-        let walk = mesh.buoyancy_with(pose, water, method, Traversal::Hierarchy).unwrap();
-        assert_same(&format!("{name}, {method}, hierarchy vs scan"), &walk, &scan, &s, 1e-10);
-        assert_eq!((walk.fully_submerged, walk.partially_submerged), (scan.fully_submerged, scan.partially_submerged), "{name}, {method}");
+        let scan = mesh
+            .buoyancy_with(pose, water, method, Traversal::Scan)
+            .unwrap();
+        let walk = mesh
+            .buoyancy_with(pose, water, method, Traversal::Hierarchy)
+            .unwrap();
+        assert_same(
+            &format!("{name}, {method}, hierarchy vs scan"),
+            &walk,
+            &scan,
+            &s,
+            1e-10,
+        );
+        assert_eq!(
+            (walk.fully_submerged, walk.partially_submerged),
+            (scan.fully_submerged, scan.partially_submerged),
+            "{name}, {method}"
+        );
     }
 }
 
@@ -321,9 +405,18 @@ fn vertices_exactly_on_the_surface() {
         let pose = Pose::from_parts(Translation3::new(0.0, h, 0.0), UnitQuaternion::identity());
         for method in [Method::Exact, Method::ExactSurface] {
             let b = mesh.buoyancy(&pose, &water, method).unwrap();
-            assert_close(&format!("{method}, h = {h}"), b.force.y, 0.5 - h, 1e-14, 1.0);
+            assert_close(
+                &format!("{method}, h = {h}"),
+                b.force.y,
+                0.5 - h,
+                1e-14,
+                1.0,
+            );
             let center = if h < 0.5 { (h - 0.5) / 2.0 } else { 0.0 };
-            assert!((b.center_of_buoyancy - Point3::new(0.0, center, 0.0)).norm() < 1e-14, "{method}, h = {h}: {b:?}");
+            assert!(
+                (b.center_of_buoyancy - Point3::new(0.0, center, 0.0)).norm() < 1e-14,
+                "{method}, h = {h}: {b:?}"
+            );
         }
     }
 }
@@ -343,12 +436,16 @@ fn parallel_equals_serial() {
             for traversal in [Traversal::Scan, Traversal::Hierarchy] {
                 let serial = mesh.buoyancy_with(&p, &water, method, traversal).unwrap();
                 for _ in 0..2 {
-                    let parallel = mesh.par_buoyancy_with(&p, &water, method, traversal).unwrap();
+                    let parallel = mesh
+                        .par_buoyancy_with(&p, &water, method, traversal)
+                        .unwrap();
                     assert_eq!(parallel, serial, "{method}, {traversal:?}, h = {h}");
                 }
             }
-            assert_eq!(mesh.par_buoyancy(&p, &water, method).unwrap(), mesh.buoyancy(&p, &water, method).unwrap());
+            assert_eq!(
+                mesh.par_buoyancy(&p, &water, method).unwrap(),
+                mesh.buoyancy(&p, &water, method).unwrap()
+            );
         }
     }
 }
-

@@ -11,14 +11,24 @@ use plotters::style::text_anchor::{HPos, VPos};
 #[test]
 fn glyphs_are_well_formed() {
     for (i, (c, rows)) in GLYPHS.iter().enumerate() {
-        assert!((HEIGHT as usize..=(HEIGHT + DESCENT) as usize).contains(&rows.len()), "{c:?}: {} rows", rows.len());
+        assert!(
+            (HEIGHT as usize..=(HEIGHT + DESCENT) as usize).contains(&rows.len()),
+            "{c:?}: {} rows",
+            rows.len()
+        );
         let w = rows[0].len();
         assert!((1..=5).contains(&w), "{c:?}: width {w}");
         for row in *rows {
             assert_eq!(row.chars().count(), w, "{c:?}: row {row:?}");
-            assert!(row.chars().all(|b| b == '#' || b == '.'), "{c:?}: row {row:?}");
+            assert!(
+                row.chars().all(|b| b == '#' || b == '.'),
+                "{c:?}: row {row:?}"
+            );
         }
-        assert!(c.is_whitespace() || rows.iter().any(|r| r.contains('#')), "{c:?} is blank");
+        assert!(
+            c.is_whitespace() || rows.iter().any(|r| r.contains('#')),
+            "{c:?} is blank"
+        );
         assert!(GLYPHS[..i].iter().all(|(d, _)| d != c), "{c:?} twice");
     }
 }
@@ -42,7 +52,10 @@ fn widths() {
 #[test]
 fn wraps_at_spaces() {
     let w = width("torus knot");
-    assert_eq!(wrap("torus knot (procedural), s = 0.3", w), ["torus knot", "(procedural),", "s = 0.3"]);
+    assert_eq!(
+        wrap("torus knot (procedural), s = 0.3", w),
+        ["torus knot", "(procedural),", "s = 0.3"]
+    );
     assert_eq!(wrap("cube, s = 0.1", 1000), ["cube, s = 0.1"]);
     assert_eq!(wrap("", 10), [""]);
 }
@@ -52,7 +65,11 @@ fn wraps_at_spaces() {
 #[test]
 fn ink_fills_the_measured_box() {
     let (w, h) = (200u32, 200u32);
-    for (text, up, descends) in [("Hello, 10⁶ µs", false, true), ("EH", false, false), ("Tilt (°)", true, false)] {
+    for (text, up, descends) in [
+        ("Hello, 10⁶ µs", false, true),
+        ("EH", false, false),
+        ("Tilt (°)", true, false),
+    ] {
         let mut buffer = vec![255u8; (w * h * 3) as usize];
         {
             let root = BitMapBackend::with_buffer(&mut buffer, (w, h)).into_drawing_area();
@@ -65,15 +82,32 @@ fn ink_fills_the_measured_box() {
             .filter(|i| buffer[*i as usize * 3] == 0)
             .map(|i| ((i % w) as i32, (i / w) as i32))
             .collect();
-        let (x0, x1) = (ink.iter().map(|p| p.0).min().unwrap(), ink.iter().map(|p| p.0).max().unwrap() + 1);
-        let (y0, y1) = (ink.iter().map(|p| p.1).min().unwrap(), ink.iter().map(|p| p.1).max().unwrap() + 1);
-        let (along, across) = (width(text) * 2, (HEIGHT + if descends { DESCENT } else { 0 }) * 2);
+        let (x0, x1) = (
+            ink.iter().map(|p| p.0).min().unwrap(),
+            ink.iter().map(|p| p.0).max().unwrap() + 1,
+        );
+        let (y0, y1) = (
+            ink.iter().map(|p| p.1).min().unwrap(),
+            ink.iter().map(|p| p.1).max().unwrap() + 1,
+        );
+        let (along, across) = (
+            width(text) * 2,
+            (HEIGHT + if descends { DESCENT } else { 0 }) * 2,
+        );
         if up {
-            assert_eq!((x0, x1), (100 - HEIGHT * 2, 100 - HEIGHT * 2 + across), "{text}");
+            assert_eq!(
+                (x0, x1),
+                (100 - HEIGHT * 2, 100 - HEIGHT * 2 + across),
+                "{text}"
+            );
             assert_eq!((y0, y1), (100 - along / 2, 100 + along / 2), "{text}");
         } else {
             assert_eq!((x0, x1), (100 - along / 2, 100 + along / 2), "{text}");
-            assert_eq!((y0, y1), (100 - HEIGHT * 2, 100 - HEIGHT * 2 + across), "{text}");
+            assert_eq!(
+                (y0, y1),
+                (100 - HEIGHT * 2, 100 - HEIGHT * 2 + across),
+                "{text}"
+            );
         }
     }
 }

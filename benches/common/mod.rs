@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use buoyancy::nalgebra::{Translation3, UnitQuaternion, Vector3};
-use buoyancy::{shape, Mesh, Pose, Real, Water};
+use buoyancy::{Mesh, Pose, Real, Water, shape};
 
 /// A benchmark model: its name in the paper's Table 1 (if any), the paper's times in ms
 /// (Fast, Improved, Exact, Fast Surface, Exact Surface), and the mesh.
@@ -28,7 +28,11 @@ pub fn models<T: Real>(large: bool) -> Vec<Model<T>> {
     let build = |(v, t): shape::Shape<T>| Mesh::new(v, t).expect("valid mesh");
     let mut models = Vec::new();
     let table = [
-        ("torusknot.obj", "torus knot", [0.09, 0.18, 0.26, 0.22, 0.33]),
+        (
+            "torusknot.obj",
+            "torus knot",
+            [0.09, 0.18, 0.26, 0.22, 0.33],
+        ),
         ("bunny.obj", "bunny", [0.23, 0.69, 0.75, 0.76, 0.90]),
         ("armadillo.obj", "armadillo", [0.98, 2.96, 3.05, 3.45, 3.94]),
     ];
@@ -37,7 +41,11 @@ pub fn models<T: Real>(large: bool) -> Vec<Model<T>> {
             for (file, name, ms) in table {
                 let (v, t) = buoyancy::io::load::<T>(dir.join(file)).expect("readable mesh");
                 let mesh = build((v, t));
-                models.push(Model { name: format!("{name} {}", mesh.triangle_count()), paper_ms: Some(ms), mesh });
+                models.push(Model {
+                    name: format!("{name} {}", mesh.triangle_count()),
+                    paper_ms: Some(ms),
+                    mesh,
+                });
             }
         }
         None => {
@@ -45,12 +53,20 @@ pub fn models<T: Real>(large: bool) -> Vec<Model<T>> {
                 "note: ../shared/meshes not found (set BUOYANCY_MESHES); benchmarking a procedural torus knot only"
             );
             let mesh = build(shape::torus_knot(2, 3, 1.0, 0.25, 80, 11).unwrap());
-            models.push(Model { name: "procedural torus knot 1760".into(), paper_ms: None, mesh });
+            models.push(Model {
+                name: "procedural torus knot 1760".into(),
+                paper_ms: None,
+                mesh,
+            });
         }
     }
     if large {
         let mesh = build(shape::torus_knot(2, 3, 1.0, 0.25, 4000, 125).unwrap());
-        models.push(Model { name: format!("torus knot {}", mesh.triangle_count()), paper_ms: None, mesh });
+        models.push(Model {
+            name: format!("torus knot {}", mesh.triangle_count()),
+            paper_ms: None,
+            mesh,
+        });
     }
     models
 }
@@ -66,16 +82,26 @@ pub fn poses<T: Real>(mesh: &Mesh<T>) -> Vec<Pose<T>> {
 /// before, as the steps of a simulation are.
 pub fn sweep<T: Real>(mesh: &Mesh<T>, count: usize) -> Vec<Pose<T>> {
     assert!(count >= 2, "a sweep needs at least 2 poses");
-    let rotation = UnitQuaternion::from_euler_angles(T::lit(0.3), T::lit(0.5), T::lit(0.2));
+    let rotation = UnitQuaternion::from_euler_angles(
+        T::from_f64_lossy(0.3),
+        T::from_f64_lossy(0.5),
+        T::from_f64_lossy(0.2),
+    );
     let up = Vector3::y();
     let heights: Vec<T> = (0..mesh.vertex_count())
         .map(|i| up.dot(&(rotation * (mesh.vertex(i) - mesh.centroid()))))
         .collect();
-    let lowest = heights.iter().copied().fold(T::max_value().unwrap(), T::min);
-    let highest = heights.iter().copied().fold(T::min_value().unwrap(), T::max);
+    let lowest = heights
+        .iter()
+        .copied()
+        .fold(T::max_value().unwrap(), T::min);
+    let highest = heights
+        .iter()
+        .copied()
+        .fold(T::min_value().unwrap(), T::max);
     (0..count)
         .map(|k| {
-            let fraction = T::lit(0.05 + 0.9 * k as f64 / (count - 1) as f64);
+            let fraction = T::from_f64_lossy(0.05 + 0.9 * k as f64 / (count - 1) as f64);
             // Water at `lowest + fraction·extent` relative to the centroid, i.e. centroid at minus that.
             let centroid_height = -(lowest + (highest - lowest) * fraction);
             let translation = up * centroid_height - rotation * mesh.centroid().coords;

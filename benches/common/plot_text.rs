@@ -39,7 +39,13 @@ pub struct Style {
 impl Style {
     /// `scale` × `scale` pixels per font pixel, anchored at the top left.
     pub fn new(scale: i32, colour: RGBColor) -> Self {
-        Style { scale, colour, h: HPos::Left, v: VPos::Top, up: false }
+        Style {
+            scale,
+            colour,
+            h: HPos::Left,
+            v: VPos::Top,
+            up: false,
+        }
     }
 
     pub fn anchor(self, h: HPos, v: VPos) -> Self {
@@ -63,7 +69,10 @@ impl Style {
 
 /// Width of `text` in font pixels: the glyphs' widths with [`SPACING`] between them.
 pub fn width(text: &str) -> i32 {
-    let total: i32 = text.chars().map(|c| glyph(c).map_or(BOX[0].len(), |g| g[0].len()) as i32 + SPACING).sum();
+    let total: i32 = text
+        .chars()
+        .map(|c| glyph(c).map_or(BOX[0].len(), |g| g[0].len()) as i32 + SPACING)
+        .sum();
     (total - SPACING).max(0)
 }
 
@@ -119,7 +128,11 @@ pub fn draw<DB: DrawingBackend>(
                 for du in 0..s {
                     for dv in 0..s {
                         let (u, v) = (u + du, v + dv);
-                        let p = if style.up { (at.0 + v, at.1 - 1 - u) } else { (at.0 + u, at.1 + v) };
+                        let p = if style.up {
+                            (at.0 + v, at.1 - 1 - u)
+                        } else {
+                            (at.0 + u, at.1 + v)
+                        };
                         area.draw_pixel(p, &style.colour)?;
                     }
                 }
@@ -131,7 +144,9 @@ pub fn draw<DB: DrawingBackend>(
 }
 
 /// Drawn for characters without a glyph.
-pub const BOX: &[&str] = &["#####", "#...#", "#...#", "#...#", "#...#", "#...#", "#####"];
+pub const BOX: &[&str] = &[
+    "#####", "#...#", "#...#", "#...#", "#...#", "#...#", "#####",
+];
 
 /// `#` is ink. Every glyph has at least [`HEIGHT`] rows (row 6 is on the baseline), all rows
 /// of one glyph have the same width, and rows past the seventh are descenders.

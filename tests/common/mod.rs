@@ -29,7 +29,9 @@ pub fn meshes_dir() -> Option<PathBuf> {
 pub fn shared_meshes() -> &'static [(String, Mesh<f64>)] {
     static MESHES: OnceLock<Vec<(String, Mesh<f64>)>> = OnceLock::new();
     MESHES.get_or_init(|| {
-        let Some(dir) = meshes_dir() else { return Vec::new() };
+        let Some(dir) = meshes_dir() else {
+            return Vec::new();
+        };
         let mut names: Vec<_> = std::fs::read_dir(&dir)
             .expect("readable mesh folder")
             .filter_map(|e| e.ok().map(|e| e.path()))
@@ -56,9 +58,18 @@ pub fn procedural_meshes() -> &'static [(String, Mesh<f64>)] {
         let build = |(v, t): shape::Shape<f64>| Mesh::new(v, t).unwrap();
         vec![
             ("cube".into(), build(shape::cube(3).unwrap())),
-            ("sphere".into(), build(shape::uv_sphere(1.0, 24, 16).unwrap())),
-            ("torus".into(), build(shape::torus(1.0, 0.4, 32, 16).unwrap())),
-            ("torus knot".into(), build(shape::torus_knot(2, 3, 1.0, 0.25, 80, 11).unwrap())),
+            (
+                "sphere".into(),
+                build(shape::uv_sphere(1.0, 24, 16).unwrap()),
+            ),
+            (
+                "torus".into(),
+                build(shape::torus(1.0, 0.4, 32, 16).unwrap()),
+            ),
+            (
+                "torus knot".into(),
+                build(shape::torus_knot(2, 3, 1.0, 0.25, 80, 11).unwrap()),
+            ),
         ]
     })
 }
@@ -79,12 +90,21 @@ pub fn pose(translation: Vector3<f64>, u: [f64; 3]) -> Pose<f64> {
         a * (tau * u[1]).cos(),
         b * (tau * u[2]).sin(),
     );
-    Pose::from_parts(Translation3::from(translation), UnitQuaternion::from_quaternion(q))
+    Pose::from_parts(
+        Translation3::from(translation),
+        UnitQuaternion::from_quaternion(q),
+    )
 }
 
 /// A pose that puts the mesh centroid at signed height `height` (in units of the mesh's
 /// bounding radius) above the water, at horizontal offset `offset`, rotated by `u`.
-pub fn pose_at_height(mesh: &Mesh<f64>, water: &Water<f64>, height: f64, offset: Vector3<f64>, u: [f64; 3]) -> Pose<f64> {
+pub fn pose_at_height(
+    mesh: &Mesh<f64>,
+    water: &Water<f64>,
+    height: f64,
+    offset: Vector3<f64>,
+    u: [f64; 3],
+) -> Pose<f64> {
     let rotation = pose(Vector3::zeros(), u).rotation;
     let n = water.normal().into_inner();
     let horizontal = offset - n * n.dot(&offset);
@@ -150,7 +170,12 @@ pub fn reference(mesh: &Mesh<f64>, pose: &Pose<f64>, water: &Water<f64>) -> Refe
     } else {
         water.project(&com)
     };
-    Reference { volume, center, force, torque }
+    Reference {
+        volume,
+        center,
+        force,
+        torque,
+    }
 }
 
 /// `|a − b| ≤ tol·scale`, with a message.

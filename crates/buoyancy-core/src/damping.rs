@@ -54,81 +54,156 @@ use crate::{Error, Mesh, Pose, Real, Water};
 
 /// The coefficients of the damping model (see the [module documentation](self)), SI units.
 ///
+/// Every coefficient is finite and non-negative, and the current finite: the constructor and
+/// the `with_*` methods check it, so a `DampingCoefficients` is always valid.
 /// [`Default`] is a model of a rough body in still water; [`DampingCoefficients::off`] switches
 /// damping off.
+///
+/// ```
+/// use buoyancy_core::{DampingCoefficients, Error};
+/// use nalgebra::Vector3;
+///
+/// let calm = DampingCoefficients::<f64>::default().with_current(Vector3::new(0.5, 0.0, 0.0))?;
+/// assert_eq!(calm.linear_drag(), 1000.0);
+/// assert!(matches!(
+///     DampingCoefficients::<f64>::new(-1.0, 1.0, 0.1, 0.1),
+///     Err(Error::InvalidDamping { parameter: "linear_drag", .. })
+/// ));
+/// # Ok::<(), Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DampingCoefficients<T: Real> {
-    /// `c₁`, linear pressure-drag coefficient in Pa per m/s (N·s/m³): the pressure on a wetted
-    /// face moving into the water at 1 m/s. Default 1000 (≈ ρ·1 m/s for fresh water): about a
-    /// fifth of critical damping on the down stroke of the heave of a 1 m cube floating half
-    /// submerged.
-    pub linear: T,
-    /// `C_D`, dimensionless pressure drag coefficient: the quadratic pressure is `½·ρ·C_D·u_n²`.
-    /// Default 1 (a flat plate face-on is about 1.2, a sphere about 0.5).
-    pub drag_coefficient: T,
-    /// `a₁`, linear angular damping rate in 1/s. Default 0.1.
-    pub angular_linear: T,
-    /// `a₂`, dimensionless quadratic angular damping coefficient. Default 0.1.
-    pub angular_quadratic: T,
-    /// `v_w`, velocity of the water (a uniform current), world frame, m/s. Default zero.
-    pub current: Vector3<T>,
+    linear_drag: T,
+    drag_coefficient: T,
+    angular_drag_linear: T,
+    angular_drag_quadratic: T,
+    current: Vector3<T>,
 }
 
 impl<T: Real> Default for DampingCoefficients<T> {
     fn default() -> Self {
         DampingCoefficients {
-            linear: T::lit(1000.0),
-            drag_coefficient: T::lit(1.0),
-            angular_linear: T::lit(0.1),
-            angular_quadratic: T::lit(0.1),
+            linear_drag: T::from_f64_lossy(1000.0),
+            drag_coefficient: T::from_f64_lossy(1.0),
+            angular_drag_linear: T::from_f64_lossy(0.1),
+            angular_drag_quadratic: T::from_f64_lossy(0.1),
             current: Vector3::zeros(),
         }
     }
 }
 
 impl<T: Real> DampingCoefficients<T> {
+    /// The coefficients `c₁ = linear_drag` (Pa per m/s), `C_D = drag_coefficient`,
+    /// `a₁ = angular_drag_linear` (1/s) and `a₂ = angular_drag_quadratic`, in still water.
+    ///
+    /// # Errors
+    /// [`Error::InvalidDamping`] naming the first coefficient that is negative or not finite.
+    pub fn new(
+        linear_drag: T,
+        drag_coefficient: T,
+        angular_drag_linear: T,
+        angular_drag_quadratic: T,
+    ) -> Result<Self, Error> {
+        Ok(DampingCoefficients {
+            linear_drag: coefficient(linear_drag, "linear_drag")?,
+            drag_coefficient: coefficient(drag_coefficient, "drag_coefficient")?,
+            angular_drag_linear: coefficient(angular_drag_linear, "angular_drag_linear")?,
+            angular_drag_quadratic: coefficient(angular_drag_quadratic, "angular_drag_quadratic")?,
+            current: Vector3::zeros(),
+        })
+    }
+
     /// No damping at all: [`Mesh::damping`] returns zero force and torque without looking at the
     /// triangles.
     pub fn off() -> Self {
         DampingCoefficients {
-            linear: T::zero(),
+            linear_drag: T::zero(),
             drag_coefficient: T::zero(),
-            angular_linear: T::zero(),
-            angular_quadratic: T::zero(),
+            angular_drag_linear: T::zero(),
+            angular_drag_quadratic: T::zero(),
             current: Vector3::zeros(),
         }
     }
 
-    /// Whether every coefficient is zero (the current alone damps nothing).
-    pub fn is_off(&self) -> bool {
-        self.linear == T::zero()
-            && self.drag_coefficient == T::zero()
-            && self.angular_linear == T::zero()
-            && self.angular_quadratic == T::zero()
+    /// `c₁`, the linear pressure-drag coefficient in Pa per m/s (N·s/m³): the pressure on a
+    /// wetted face moving into the water at 1 m/s. Default 1000 (≈ ρ·1 m/s for fresh water):
+    /// about a fifth of critical damping on the down stroke of the heave of a 1 m cube floating
+    /// half submerged.
+    pub fn linear_drag(&self) -> T {
+        self.linear_drag
     }
 
-    fn check(&self) -> Result<(), Error> {
-        let fields = [
-            (self.linear, "linear"),
-            (self.drag_coefficient, "drag_coefficient"),
-            (self.angular_linear, "angular_linear"),
-            (self.angular_quadratic, "angular_quadratic"),
-        ];
-        for (value, parameter) in fields {
-            if !value.is_finite() || value < T::zero() {
-                return Err(Error::InvalidDamping {
-                    parameter,
-                    reason: "must be finite and non-negative",
-                });
-            }
-        }
-        if !self.current.iter().all(|c| c.is_finite()) {
+    /// `C_D`, the dimensionless pressure drag coefficient: the quadratic pressure is
+    /// `½·ρ·C_D·u_n²`. Default 1 (a flat plate face-on is about 1.2, a sphere about 0.5).
+    pub fn drag_coefficient(&self) -> T {
+        self.drag_coefficient
+    }
+
+    /// `a₁`, the linear angular damping rate in 1/s. Default 0.1.
+    pub fn angular_drag_linear(&self) -> T {
+        self.angular_drag_linear
+    }
+
+    /// `a₂`, the dimensionless quadratic angular damping coefficient. Default 0.1.
+    pub fn angular_drag_quadratic(&self) -> T {
+        self.angular_drag_quadratic
+    }
+
+    /// `v_w`, the velocity of the water (a uniform current), world frame, m/s. Default zero.
+    pub fn current(&self) -> Vector3<T> {
+        self.current
+    }
+
+    /// The same coefficients with another `c₁` (Pa per m/s, finite and non-negative).
+    pub fn with_linear_drag(mut self, linear_drag: T) -> Result<Self, Error> {
+        self.linear_drag = coefficient(linear_drag, "linear_drag")?;
+        Ok(self)
+    }
+
+    /// The same coefficients with another `C_D` (finite and non-negative).
+    pub fn with_drag_coefficient(mut self, drag_coefficient: T) -> Result<Self, Error> {
+        self.drag_coefficient = coefficient(drag_coefficient, "drag_coefficient")?;
+        Ok(self)
+    }
+
+    /// The same coefficients with another angular damping `a₁` (1/s) and `a₂` (finite and
+    /// non-negative).
+    pub fn with_angular_drag(mut self, linear: T, quadratic: T) -> Result<Self, Error> {
+        self.angular_drag_linear = coefficient(linear, "angular_drag_linear")?;
+        self.angular_drag_quadratic = coefficient(quadratic, "angular_drag_quadratic")?;
+        Ok(self)
+    }
+
+    /// The same coefficients in a uniform current `v_w` (world frame, m/s, finite).
+    pub fn with_current(mut self, current: Vector3<T>) -> Result<Self, Error> {
+        if !current.iter().all(|c| c.is_finite()) {
             return Err(Error::InvalidDamping {
                 parameter: "current",
                 reason: "has a NaN or infinite component",
             });
         }
-        Ok(())
+        self.current = current;
+        Ok(self)
+    }
+
+    /// Whether every coefficient is zero (the current alone damps nothing).
+    pub fn is_off(&self) -> bool {
+        self.linear_drag == T::zero()
+            && self.drag_coefficient == T::zero()
+            && self.angular_drag_linear == T::zero()
+            && self.angular_drag_quadratic == T::zero()
+    }
+}
+
+/// `value` if it is finite and non-negative, else [`Error::InvalidDamping`] naming `parameter`.
+fn coefficient<T: Real>(value: T, parameter: &'static str) -> Result<T, Error> {
+    if value.is_finite() && value >= T::zero() {
+        Ok(value)
+    } else {
+        Err(Error::InvalidDamping {
+            parameter,
+            reason: "must be finite and non-negative",
+        })
     }
 }
 
@@ -195,11 +270,15 @@ impl<T: Real> Drag<T> {
         self.area2 += norm2;
         // u_n(p) = n̂·(v + ω × p) = n̂·v + (n̂ × ω)·p.
         let (base, slope) = (normal.dot(&self.velocity), normal.cross(&self.omega));
-        let un = [base + slope.dot(&p[0]), base + slope.dot(&p[1]), base + slope.dot(&p[2])];
+        let un = [
+            base + slope.dot(&p[0]),
+            base + slope.dot(&p[1]),
+            base + slope.dot(&p[2]),
+        ];
         if un[0] <= zero && un[1] <= zero && un[2] <= zero {
             return;
         }
-        let half = T::lit(0.5);
+        let half = T::from_f64_lossy(0.5);
         if un[0] >= zero && un[1] >= zero && un[2] >= zero {
             self.facing(p, un, normal, norm2 * half);
         } else {
@@ -216,7 +295,11 @@ impl<T: Real> Drag<T> {
     /// normal velocity, `u` at the corners, is non-negative.
     #[inline(always)]
     fn facing(&mut self, q: [Vector3<T>; 3], u: [T; 3], normal: &Vector3<T>, area: T) {
-        let (third, twelfth, sixtieth) = (T::lit(1.0 / 3.0), T::lit(1.0 / 12.0), T::lit(1.0 / 60.0));
+        let (third, twelfth, sixtieth) = (
+            T::from_f64_lossy(1.0 / 3.0),
+            T::from_f64_lossy(1.0 / 12.0),
+            T::from_f64_lossy(1.0 / 60.0),
+        );
         let sum_u = u[0] + u[1] + u[2];
         let sum_u2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
         let sum_q = q[0] + q[1] + q[2];
@@ -226,7 +309,9 @@ impl<T: Real> Drag<T> {
         let int_u = area * sum_u * third;
         let int_u2 = area * (sum_u2 + sum_u * sum_u) * twelfth;
         let int_uq = (sum_uq + sum_q * sum_u) * (area * twelfth);
-        let int_u2q = (sum_q * (sum_u * sum_u + sum_u2) + sum_uq * (sum_u + sum_u) + sum_u2q * T::lit(2.0))
+        let int_u2q = (sum_q * (sum_u * sum_u + sum_u2)
+            + sum_uq * (sum_u + sum_u)
+            + sum_u2q * T::from_f64_lossy(2.0))
             * (area * sixtieth);
         let pressure = int_u * self.linear + int_u2 * self.quadratic;
         let moment = int_uq * self.linear + int_u2q * self.quadratic;
@@ -247,8 +332,7 @@ impl<T: Real> Mesh<T> {
     ///
     /// # Errors
     /// [`Error::InvalidPose`] for a non-finite pose; [`Error::InvalidVelocity`] for a non-finite
-    /// velocity; [`Error::InvalidDamping`] for a negative or non-finite coefficient;
-    /// [`Error::NonFiniteResult`] if the result overflows.
+    /// velocity; [`Error::NonFiniteResult`] if the result overflows.
     pub fn damping(
         &self,
         pose: &Pose<T>,
@@ -257,9 +341,12 @@ impl<T: Real> Mesh<T> {
         water: &Water<T>,
         coefficients: &DampingCoefficients<T>,
     ) -> Result<Damping<T>, Error> {
-        coefficients.check()?;
         let frame = Frame::new(self, pose, water)?;
-        if !linear_velocity.iter().chain(angular_velocity.iter()).all(|c| c.is_finite()) {
+        if !linear_velocity
+            .iter()
+            .chain(angular_velocity.iter())
+            .all(|c| c.is_finite())
+        {
             return Err(Error::InvalidVelocity);
         }
         // Switched off, or entirely above the surface.
@@ -270,12 +357,12 @@ impl<T: Real> Mesh<T> {
         let rotation_t = frame.rotation.transpose();
         let velocity = rotation_t * (linear_velocity - coefficients.current);
         let omega = rotation_t * angular_velocity;
-        let half = T::lit(0.5);
+        let half = T::from_f64_lossy(0.5);
         let zero = T::zero();
         let mut drag = Drag {
             velocity,
             omega,
-            linear: coefficients.linear,
+            linear: coefficients.linear_drag,
             quadratic: half * water.density() * coefficients.drag_coefficient,
             force: Vector3::zeros(),
             torque: Vector3::zeros(),
@@ -285,31 +372,38 @@ impl<T: Real> Mesh<T> {
         // triangles near the waterline are classified; the drag itself is not linear in the
         // velocity over a node (only the part facing the flow counts), so every wetted triangle
         // is still integrated.
-        self.hierarchy.walk(&frame.normal_local, frame.height, |visit| match visit {
-            Visit::Submerged(index, _) => {
-                for i in self.hierarchy.range(index) {
-                    let (normal, area2) = &self.normals[i];
-                    drag.wetted(self.corners(i), normal, *area2);
-                }
-            }
-            Visit::Triangles(triangles) => {
-                for i in triangles {
-                    let v = self.corners(i);
-                    let h = frame.heights(&v);
-                    // A triangle lying in the surface, or touching it from above, is dry.
-                    if !(h[0] < zero || h[1] < zero || h[2] < zero) {
-                        continue;
-                    }
-                    let (normal, area2) = &self.normals[i];
-                    if h[0] <= zero && h[1] <= zero && h[2] <= zero {
-                        drag.wetted(v, normal, *area2);
-                    } else {
-                        // The pieces lie in the triangle's plane: their area is along its normal.
-                        clip_below(v, h, |p, _| drag.wetted(p, normal, normal.dot(&(p[1] - p[0]).cross(&(p[2] - p[0])))));
+        self.hierarchy
+            .walk(&frame.normal_local, frame.height, |visit| match visit {
+                Visit::Submerged(index, _) => {
+                    for i in self.hierarchy.range(index) {
+                        let (normal, area2) = &self.normals[i];
+                        drag.wetted(self.corners(i), normal, *area2);
                     }
                 }
-            }
-        });
+                Visit::Triangles(triangles) => {
+                    for i in triangles {
+                        let v = self.corners(i);
+                        let h = frame.heights(&v);
+                        // A triangle lying in the surface, or touching it from above, is dry.
+                        if !(h[0] < zero || h[1] < zero || h[2] < zero) {
+                            continue;
+                        }
+                        let (normal, area2) = &self.normals[i];
+                        if h[0] <= zero && h[1] <= zero && h[2] <= zero {
+                            drag.wetted(v, normal, *area2);
+                        } else {
+                            // The pieces lie in the triangle's plane: their area is along its normal.
+                            clip_below(v, h, |p, _| {
+                                drag.wetted(
+                                    p,
+                                    normal,
+                                    normal.dot(&(p[1] - p[0]).cross(&(p[2] - p[0]))),
+                                )
+                            });
+                        }
+                    }
+                }
+            });
 
         let wetted_area = drag.area2 * half;
         let wetted_fraction = if self.surface_area > zero {
@@ -317,11 +411,12 @@ impl<T: Real> Mesh<T> {
         } else {
             zero
         };
-        let size = water.density() * self.volume.powf(T::lit(5.0 / 3.0));
+        let size = water.density() * self.volume.powf(T::from_f64_lossy(5.0 / 3.0));
         let angular = -omega
             * (wetted_fraction
                 * size
-                * (coefficients.angular_linear + coefficients.angular_quadratic * omega.norm()));
+                * (coefficients.angular_drag_linear
+                    + coefficients.angular_drag_quadratic * omega.norm()));
         let result = Damping {
             force: frame.rotation * drag.force,
             torque: frame.rotation * (drag.torque + angular),
@@ -329,7 +424,12 @@ impl<T: Real> Mesh<T> {
             wetted_area,
             wetted_fraction,
         };
-        if result.force.iter().chain(result.torque.iter()).all(|c| c.is_finite()) {
+        if result
+            .force
+            .iter()
+            .chain(result.torque.iter())
+            .all(|c| c.is_finite())
+        {
             Ok(result)
         } else {
             Err(Error::NonFiniteResult)
@@ -340,7 +440,7 @@ impl<T: Real> Mesh<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{shape, Method};
+    use crate::{Method, shape};
     use nalgebra::{Translation3, UnitQuaternion};
 
     fn cube(side: f64) -> Mesh<f64> {
@@ -353,7 +453,14 @@ mod tests {
     }
 
     fn damp(mesh: &Mesh<f64>, pose: &Pose<f64>, v: Vector3<f64>, w: Vector3<f64>) -> Damping<f64> {
-        mesh.damping(pose, &v, &w, &Water::default(), &DampingCoefficients::default()).unwrap()
+        mesh.damping(
+            pose,
+            &v,
+            &w,
+            &Water::default(),
+            &DampingCoefficients::default(),
+        )
+        .unwrap()
     }
 
     /// A fully submerged unit cube spinning at ω about z: each side face pushes on the half where
@@ -366,11 +473,23 @@ mod tests {
         for n in [1, 2, 5] {
             let (v, t) = shape::cube::<f64>(n).unwrap();
             let c = Mesh::new(v, t).unwrap();
-            let d = damp(&c, &at(0.0, -3.0, 0.0), Vector3::zeros(), Vector3::new(0.0, 0.0, omega));
+            let d = damp(
+                &c,
+                &at(0.0, -3.0, 0.0),
+                Vector3::zeros(),
+                Vector3::new(0.0, 0.0, omega),
+            );
             assert!(d.force.norm() < 1e-9, "{n}: {:?}", d.force);
             let drag_z = d.torque.z - (-(0.1 + 0.1 * omega) * 1000.0 * omega); // minus the angular term (V = 1, f = 1)
-            assert!((drag_z - expected).abs() < 1e-9, "{n}: {drag_z} vs {expected}");
-            assert!(d.torque.x.abs() < 1e-9 && d.torque.y.abs() < 1e-9, "{n}: {:?}", d.torque);
+            assert!(
+                (drag_z - expected).abs() < 1e-9,
+                "{n}: {drag_z} vs {expected}"
+            );
+            assert!(
+                d.torque.x.abs() < 1e-9 && d.torque.y.abs() < 1e-9,
+                "{n}: {:?}",
+                d.torque
+            );
         }
         // Half submerged and moving too: the same for every triangulation.
         let results: alloc::vec::Vec<Damping<f64>> = [1, 3, 6]
@@ -378,25 +497,53 @@ mod tests {
             .map(|n| {
                 let (v, t) = shape::cube::<f64>(n).unwrap();
                 let c = Mesh::new(v, t).unwrap();
-                let pose = Pose::from_parts(Translation3::new(0.0, 0.1, 0.0), UnitQuaternion::from_euler_angles(0.2, 0.1, 0.3));
-                damp(&c, &pose, Vector3::new(0.5, -1.0, 0.3), Vector3::new(0.4, -1.0, 2.0))
+                let pose = Pose::from_parts(
+                    Translation3::new(0.0, 0.1, 0.0),
+                    UnitQuaternion::from_euler_angles(0.2, 0.1, 0.3),
+                );
+                damp(
+                    &c,
+                    &pose,
+                    Vector3::new(0.5, -1.0, 0.3),
+                    Vector3::new(0.4, -1.0, 2.0),
+                )
             })
             .collect();
         for d in &results[1..] {
-            assert!((d.force - results[0].force).norm() < 1e-9 * results[0].force.norm(), "{:?} vs {:?}", d.force, results[0].force);
-            assert!((d.torque - results[0].torque).norm() < 1e-9 * results[0].torque.norm(), "{:?} vs {:?}", d.torque, results[0].torque);
+            assert!(
+                (d.force - results[0].force).norm() < 1e-9 * results[0].force.norm(),
+                "{:?} vs {:?}",
+                d.force,
+                results[0].force
+            );
+            assert!(
+                (d.torque - results[0].torque).norm() < 1e-9 * results[0].torque.norm(),
+                "{:?} vs {:?}",
+                d.torque,
+                results[0].torque
+            );
         }
     }
 
     #[test]
     fn zero_when_dry() {
         let c = cube(1.0);
-        let d = damp(&c, &at(0.0, 2.0, 0.0), Vector3::new(1.0, -3.0, 2.0), Vector3::new(0.5, 1.0, -2.0));
+        let d = damp(
+            &c,
+            &at(0.0, 2.0, 0.0),
+            Vector3::new(1.0, -3.0, 2.0),
+            Vector3::new(0.5, 1.0, -2.0),
+        );
         assert_eq!(d.force, Vector3::zeros());
         assert_eq!(d.torque, Vector3::zeros());
         assert_eq!(d.wetted_area, 0.0);
         // Touching the surface from above is still dry.
-        let d = damp(&c, &at(0.0, 0.5, 0.0), Vector3::new(0.0, -3.0, 0.0), Vector3::zeros());
+        let d = damp(
+            &c,
+            &at(0.0, 0.5, 0.0),
+            Vector3::new(0.0, -3.0, 0.0),
+            Vector3::zeros(),
+        );
         assert_eq!(d.force, Vector3::zeros());
     }
 
@@ -406,9 +553,18 @@ mod tests {
         let d = damp(&c, &at(0.0, -0.2, 0.0), Vector3::zeros(), Vector3::zeros());
         assert_eq!((d.force, d.torque), (Vector3::zeros(), Vector3::zeros()));
         let off = c
-            .damping(&at(0.0, -5.0, 0.0), &Vector3::new(3.0, 1.0, 0.0), &Vector3::x(), &Water::default(), &DampingCoefficients::off())
+            .damping(
+                &at(0.0, -5.0, 0.0),
+                &Vector3::new(3.0, 1.0, 0.0),
+                &Vector3::x(),
+                &Water::default(),
+                &DampingCoefficients::off(),
+            )
             .unwrap();
-        assert_eq!((off.force, off.torque), (Vector3::zeros(), Vector3::zeros()));
+        assert_eq!(
+            (off.force, off.torque),
+            (Vector3::zeros(), Vector3::zeros())
+        );
     }
 
     #[test]
@@ -416,9 +572,17 @@ mod tests {
         // A 1 m cube fully under water moving down at 2 m/s: only the bottom face (1 m²)
         // faces the flow; the sides are parallel to it.
         let c = cube(1.0);
-        let d = damp(&c, &at(0.0, -3.0, 0.0), Vector3::new(0.0, -2.0, 0.0), Vector3::zeros());
+        let d = damp(
+            &c,
+            &at(0.0, -3.0, 0.0),
+            Vector3::new(0.0, -2.0, 0.0),
+            Vector3::zeros(),
+        );
         let expected = 1000.0 * 2.0 + 0.5 * 1000.0 * 1.0 * 4.0;
-        assert!((d.force - Vector3::new(0.0, expected, 0.0)).norm() < 1e-9 * expected, "{d:?}");
+        assert!(
+            (d.force - Vector3::new(0.0, expected, 0.0)).norm() < 1e-9 * expected,
+            "{d:?}"
+        );
         assert!(d.torque.norm() < 1e-9 * expected);
         assert!((d.wetted_area - 6.0).abs() < 1e-12 && (d.wetted_fraction - 1.0).abs() < 1e-12);
     }
@@ -430,7 +594,11 @@ mod tests {
             Translation3::new(0.3, -0.1, 0.2),
             UnitQuaternion::from_euler_angles(0.3, -0.7, 1.1),
         );
-        for v in [Vector3::new(1.0, 0.0, 0.0), Vector3::new(-0.3, 2.0, 0.5), Vector3::new(0.0, -4.0, 1.0)] {
+        for v in [
+            Vector3::new(1.0, 0.0, 0.0),
+            Vector3::new(-0.3, 2.0, 0.5),
+            Vector3::new(0.0, -4.0, 1.0),
+        ] {
             let d = damp(&c, &rotated, v, Vector3::zeros());
             assert!(d.force.dot(&v) < 0.0, "{v:?}: {d:?}");
             // The power of the damping is never positive, whatever the motion.
@@ -449,8 +617,18 @@ mod tests {
         // A body at rest in a current feels the same force as one moving against still water.
         let c = cube(1.0);
         let pose = at(0.0, -0.3, 0.0);
-        let current = DampingCoefficients { current: Vector3::new(1.5, 0.0, 0.0), ..Default::default() };
-        let drifted = c.damping(&pose, &Vector3::zeros(), &Vector3::zeros(), &Water::default(), &current).unwrap();
+        let current = DampingCoefficients::default()
+            .with_current(Vector3::new(1.5, 0.0, 0.0))
+            .unwrap();
+        let drifted = c
+            .damping(
+                &pose,
+                &Vector3::zeros(),
+                &Vector3::zeros(),
+                &Water::default(),
+                &current,
+            )
+            .unwrap();
         let moving = damp(&c, &pose, Vector3::new(-1.5, 0.0, 0.0), Vector3::zeros());
         assert!((drifted.force - moving.force).norm() < 1e-9 && drifted.force.x > 0.0);
     }
@@ -461,14 +639,23 @@ mod tests {
         // so the force is proportional to the draft.
         let c = cube(1.0);
         let v = Vector3::new(1.0, 0.0, 0.0);
-        let force = |draft: f64| damp(&c, &at(0.0, 0.5 - draft, 0.0), v, Vector3::zeros()).force.x;
+        let force = |draft: f64| {
+            damp(&c, &at(0.0, 0.5 - draft, 0.0), v, Vector3::zeros())
+                .force
+                .x
+        };
         let (f1, f2, f3) = (force(0.2), force(0.4), force(0.8));
         assert!(f1 < 0.0);
-        assert!((f2 / f1 - 2.0).abs() < 1e-9 && (f3 / f1 - 4.0).abs() < 1e-9, "{f1} {f2} {f3}");
+        assert!(
+            (f2 / f1 - 2.0).abs() < 1e-9 && (f3 / f1 - 4.0).abs() < 1e-9,
+            "{f1} {f2} {f3}"
+        );
         // The wetted area matches the exact method's picture of the submerged part.
         let d = damp(&c, &at(0.0, 0.5 - 0.4, 0.0), v, Vector3::zeros());
         assert!((d.wetted_area - (1.0 + 4.0 * 0.4)).abs() < 1e-12);
-        let b = c.buoyancy(&at(0.0, 0.1, 0.0), &Water::default(), Method::Exact).unwrap();
+        let b = c
+            .buoyancy(&at(0.0, 0.1, 0.0), &Water::default(), Method::Exact)
+            .unwrap();
         assert!((b.submerged_volume - 0.4).abs() < 1e-12);
     }
 
@@ -482,16 +669,26 @@ mod tests {
         let half = damp(&s, &at(0.0, 0.0, 0.0), Vector3::zeros(), w);
         let full = damp(&s, &at(0.0, -3.0, 0.0), Vector3::zeros(), w);
         assert!(full.torque.y < 0.0 && half.torque.y < 0.0);
-        assert!((half.torque.y / full.torque.y - 0.5).abs() < 0.02, "{half:?} {full:?}");
+        assert!(
+            (half.torque.y / full.torque.y - 0.5).abs() < 0.02,
+            "{half:?} {full:?}"
+        );
         let expected = 1000.0 * s.volume().powf(5.0 / 3.0) * (0.1 + 0.1 * 3.0) * 3.0;
-        assert!((full.torque.y + expected).abs() < 0.05 * expected, "{full:?} vs {expected}");
+        assert!(
+            (full.torque.y + expected).abs() < 0.05 * expected,
+            "{full:?} vs {expected}"
+        );
     }
 
     #[test]
     fn no_nan_for_extreme_inputs() {
         let c = cube(1.0);
         for y in [-1e6, -10.0, -0.5, 0.0, 0.5, 1e6] {
-            for v in [Vector3::zeros(), Vector3::new(1e-30, 0.0, 0.0), Vector3::new(0.0, -1e6, 0.0)] {
+            for v in [
+                Vector3::zeros(),
+                Vector3::new(1e-30, 0.0, 0.0),
+                Vector3::new(0.0, -1e6, 0.0),
+            ] {
                 let d = damp(&c, &at(0.0, y, 0.0), v, v);
                 assert!(d.force.iter().chain(d.torque.iter()).all(|x| x.is_finite()));
             }
@@ -499,15 +696,50 @@ mod tests {
         let w = Water::default();
         let k = DampingCoefficients::default();
         let nan = Vector3::new(f64::NAN, 0.0, 0.0);
-        assert_eq!(c.damping(&at(0.0, 0.0, 0.0), &nan, &Vector3::zeros(), &w, &k), Err(Error::InvalidVelocity));
-        assert!(matches!(c.damping(&at(f64::NAN, 0.0, 0.0), &Vector3::zeros(), &Vector3::zeros(), &w, &k), Err(Error::InvalidPose { .. })));
-        let negative = DampingCoefficients { linear: -1.0, ..k };
-        assert!(matches!(c.damping(&at(0.0, 0.0, 0.0), &Vector3::zeros(), &Vector3::zeros(), &w, &negative), Err(Error::InvalidDamping { parameter: "linear", .. })));
+        assert_eq!(
+            c.damping(&at(0.0, 0.0, 0.0), &nan, &Vector3::zeros(), &w, &k),
+            Err(Error::InvalidVelocity)
+        );
+        assert!(matches!(
+            c.damping(
+                &at(f64::NAN, 0.0, 0.0),
+                &Vector3::zeros(),
+                &Vector3::zeros(),
+                &w,
+                &k
+            ),
+            Err(Error::InvalidPose { .. })
+        ));
+        assert!(matches!(
+            k.with_linear_drag(-1.0),
+            Err(Error::InvalidDamping {
+                parameter: "linear_drag",
+                ..
+            })
+        ));
+        assert!(matches!(
+            k.with_current(nan),
+            Err(Error::InvalidDamping {
+                parameter: "current",
+                ..
+            })
+        ));
         // f32 too.
         let (v, t) = shape::cube::<f32>(2).unwrap();
         let c32 = Mesh::new(v, t).unwrap();
-        let pose = Pose::from_parts(Translation3::new(0.0f32, -0.2, 0.0), UnitQuaternion::identity());
-        let d = c32.damping(&pose, &Vector3::new(0.0, -1.0, 0.0), &Vector3::zeros(), &Water::default(), &DampingCoefficients::default()).unwrap();
+        let pose = Pose::from_parts(
+            Translation3::new(0.0f32, -0.2, 0.0),
+            UnitQuaternion::identity(),
+        );
+        let d = c32
+            .damping(
+                &pose,
+                &Vector3::new(0.0, -1.0, 0.0),
+                &Vector3::zeros(),
+                &Water::default(),
+                &DampingCoefficients::default(),
+            )
+            .unwrap();
         assert!(d.force.y > 0.0 && d.force.y.is_finite());
     }
 }

@@ -137,20 +137,27 @@ impl fmt::Display for Error {
             Error::NonFiniteVertex { vertex } => {
                 write!(f, "vertex {vertex} has a NaN or infinite coordinate")
             }
-            Error::IndexOutOfRange { triangle, index, vertex_count } => write!(
+            Error::IndexOutOfRange {
+                triangle,
+                index,
+                vertex_count,
+            } => write!(
                 f,
                 "triangle {triangle} refers to vertex {index}, but the mesh has only {vertex_count} vertices"
             ),
-            Error::RepeatedIndex { triangle, indices } => write!(
-                f,
-                "triangle {triangle} uses a vertex twice: {indices:?}"
-            ),
+            Error::RepeatedIndex { triangle, indices } => {
+                write!(f, "triangle {triangle} uses a vertex twice: {indices:?}")
+            }
             Error::OpenEdge { edge, triangle } => write!(
                 f,
                 "the mesh is not closed: edge ({}, {}) of triangle {triangle} has no neighbour",
                 edge[0], edge[1]
             ),
-            Error::NonManifoldEdge { edge, triangle_count, triangles } => write!(
+            Error::NonManifoldEdge {
+                edge,
+                triangle_count,
+                triangles,
+            } => write!(
                 f,
                 "the mesh is not a manifold: edge ({}, {}) is shared by {triangle_count} triangles (e.g. {} and {})",
                 edge[0], edge[1], triangles[0], triangles[1]

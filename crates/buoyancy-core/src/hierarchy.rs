@@ -35,9 +35,9 @@ use alloc::vec::Vec;
 
 use nalgebra::Vector3;
 
+use crate::Real;
 use crate::integrals::Sums;
 use crate::parallel::join;
-use crate::Real;
 
 /// Most triangles in a leaf: a node with more triangles is an inner node.
 const LEAF_SIZE: u32 = 8;
@@ -118,11 +118,14 @@ struct Query<T: Real> {
 impl<T: Real> Query<T> {
     fn new(hierarchy: &Hierarchy<T>, normal: &Vector3<T>, height: T) -> Self {
         let normal = [normal.x, normal.y, normal.z];
-        let near: [usize; 3] = core::array::from_fn(|k| if normal[k] >= T::zero() { k } else { k + 3 });
+        let near: [usize; 3] =
+            core::array::from_fn(|k| if normal[k] >= T::zero() { k } else { k + 3 });
         Query {
             normal,
             height,
-            margin: T::default_epsilon() * T::lit(8.0) * (hierarchy.magnitude + height.abs()),
+            margin: T::default_epsilon()
+                * T::from_f64_lossy(8.0)
+                * (hierarchy.magnitude + height.abs()),
             near,
             far: near.map(|k| (k + 3) % 6),
         }
@@ -163,7 +166,12 @@ impl<T: Real> Hierarchy<T> {
         let mut order: Vec<u32> = (0..triangles.len() as u32).collect();
         let centers: Vec<Vector3<f64>> = triangles
             .iter()
-            .map(|t| t.iter().map(|&k| vertices[k as usize].map(T::to_f64)).sum::<Vector3<f64>>() / 3.0)
+            .map(|t| {
+                t.iter()
+                    .map(|&k| vertices[k as usize].map(T::to_f64))
+                    .sum::<Vector3<f64>>()
+                    / 3.0
+            })
             .collect();
         let capacity = 2 * triangles.len() / LEAF_SIZE as usize + 1;
         let mut hierarchy = Hierarchy {
@@ -171,11 +179,19 @@ impl<T: Real> Hierarchy<T> {
             sums: Vec::with_capacity(capacity),
             magnitude: T::zero(),
         };
-        let builder = Builder { vertices, triangles, volume6, moment24, centers: &centers };
+        let builder = Builder {
+            vertices,
+            triangles,
+            volume6,
+            moment24,
+            centers: &centers,
+        };
         builder.node(&mut hierarchy, &mut order, 0);
         let b = &hierarchy.nodes[0].bounds;
-        let magnitude: f64 = (0..3).map(|k| f64::from(b[k].abs().max(b[k + 3].abs()))).sum();
-        hierarchy.magnitude = T::lit(magnitude);
+        let magnitude: f64 = (0..3)
+            .map(|k| f64::from(b[k].abs().max(b[k + 3].abs())))
+            .sum();
+        hierarchy.magnitude = T::from_f64_lossy(magnitude);
         (hierarchy, order)
     }
 
@@ -189,12 +205,25 @@ impl<T: Real> Hierarchy<T> {
     /// depend on the threads. No allocation: below the split, the pending nodes are kept on a
     /// fixed stack (the depth is at most log₂ of the triangle count, below 64).
     #[inline]
-    pub fn reduce<S: Sums>(&self, normal: &Vector3<T>, height: T, parallel: bool, visit: &(impl Fn(&mut S, Visit) + Sync)) -> S {
+    pub fn reduce<S: Sums>(
+        &self,
+        normal: &Vector3<T>,
+        height: T,
+        parallel: bool,
+        visit: &(impl Fn(&mut S, Visit) + Sync),
+    ) -> S {
         let query = Query::new(self, normal, height);
         self.split(&query, 0, 0, parallel, visit)
     }
 
-    fn split<S: Sums>(&self, query: &Query<T>, index: u32, depth: u32, parallel: bool, visit: &(impl Fn(&mut S, Visit) + Sync)) -> S {
+    fn split<S: Sums>(
+        &self,
+        query: &Query<T>,
+        index: u32,
+        depth: u32,
+        parallel: bool,
+        visit: &(impl Fn(&mut S, Visit) + Sync),
+    ) -> S {
         let node = &self.nodes[index as usize];
         if depth == SPLIT_DEPTH || node.is_leaf() {
             let mut sums = S::zero();
@@ -316,13 +345,24 @@ impl<T: Real> Builder<'_, T> {
             count: order.len() as u32,
             link: first as u32,
         });
-        hierarchy.sums.push(NodeSums { volume6: T::lit(volume6), moment24: moment24.map(T::lit) });
+        hierarchy.sums.push(NodeSums {
+            volume6: T::from_f64_lossy(volume6),
+            moment24: moment24.map(T::from_f64_lossy),
+        });
         if hierarchy.nodes[index].is_leaf() {
             return;
         }
         let (c_lo, c_hi) = order.iter().fold(
-            (Vector3::repeat(f64::INFINITY), Vector3::repeat(f64::NEG_INFINITY)),
-            |(l, h), &i| (l.inf(&self.centers[i as usize]), h.sup(&self.centers[i as usize])),
+            (
+                Vector3::repeat(f64::INFINITY),
+                Vector3::repeat(f64::NEG_INFINITY),
+            ),
+            |(l, h), &i| {
+                (
+                    l.inf(&self.centers[i as usize]),
+                    h.sup(&self.centers[i as usize]),
+                )
+            },
         );
         let axis = (c_hi - c_lo).imax();
         let mid = order.len() / 2;
@@ -342,7 +382,16 @@ mod tests {
 
     #[test]
     fn boxes_round_outward() {
-        for x in [0.1, -0.1, 1.0 / 3.0, -2.0 / 3.0, 1e-30, 12_345.678_9, 0.5, 0.0] {
+        for x in [
+            0.1,
+            -0.1,
+            1.0 / 3.0,
+            -2.0 / 3.0,
+            1e-30,
+            12_345.678_9,
+            0.5,
+            0.0,
+        ] {
             let (down, up) = (to_f32_outward(x, true), to_f32_outward(x, false));
             assert!(f64::from(down) <= x && x <= f64::from(up), "{x}");
             assert!(up == down || up == down.next_up(), "{x}: {down} {up}");

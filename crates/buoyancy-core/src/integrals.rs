@@ -150,7 +150,7 @@ impl<T: Real> SurfaceSums<T> {
         let q = h[0] * h[0] + h[1] * h[1] + h[2] * h[2] + sum_h * sum_h;
         self.force6 += area2 * sum_h;
         self.torque24 += w.cross(&area2);
-        self.moment24 += (w - n * (q * T::lit(0.5))) * n.dot(&area2);
+        self.moment24 += (w - n * (q * T::from_f64_lossy(0.5))) * n.dot(&area2);
     }
 
     /// Adds `sign` times [`add_triangle`](Self::add_triangle) of the corner `[a, ab, ca]` cut
@@ -228,7 +228,15 @@ pub(crate) fn clip_below<T: Real>(
     mut emit: impl FnMut([Vector3<T>; 3], [T; 3]),
 ) -> [Vector3<T>; 2] {
     let zero = T::zero();
-    let Split { odd_is_below, a, b, c, heights: [ha, hb, hc], ab, ca } = split(p, h);
+    let Split {
+        odd_is_below,
+        a,
+        b,
+        c,
+        heights: [ha, hb, hc],
+        ab,
+        ca,
+    } = split(p, h);
     if odd_is_below {
         // Submerged: (a, ab, ca), whose boundary runs ab → ca along the waterline.
         emit([a, ab, ca], [ha, zero, zero]);
@@ -303,9 +311,14 @@ mod tests {
     #[test]
     fn corner_kernel_is_the_triangle_kernel() {
         let n = Vector3::new(0.2, 0.9, -0.3).normalize();
-        let (a, ab, ca) = (Vector3::new(0.3, -1.2, 0.5), Vector3::new(1.1, 0.2, -0.4), Vector3::new(-0.7, 0.3, 0.9));
+        let (a, ab, ca) = (
+            Vector3::new(0.3, -1.2, 0.5),
+            Vector3::new(1.1, 0.2, -0.4),
+            Vector3::new(-0.7, 0.3, 0.9),
+        );
         for sign in [1.0, -1.0] {
-            let (mut corner, mut triangle) = (SurfaceSums::<f64>::zero(), SurfaceSums::<f64>::zero());
+            let (mut corner, mut triangle) =
+                (SurfaceSums::<f64>::zero(), SurfaceSums::<f64>::zero());
             corner.add_corner(&n, [a, ab, ca], -0.8, sign);
             let (b, c) = if sign > 0.0 { (ab, ca) } else { (ca, ab) };
             triangle.add_triangle(&n, [a, b, c], [-0.8, 0.0, 0.0]);
@@ -360,7 +373,13 @@ mod tests {
         }
         let force = s.force6 / 6.0;
         let torque = s.torque24 / 24.0;
-        assert!((force - Vector3::new(0.0, 0.0, fz)).norm() < 1e-6, "{force:?} vs {fz}");
-        assert!((torque - Vector3::new(mx, my, 0.0)).norm() < 1e-6, "{torque:?} vs {mx}, {my}");
+        assert!(
+            (force - Vector3::new(0.0, 0.0, fz)).norm() < 1e-6,
+            "{force:?} vs {fz}"
+        );
+        assert!(
+            (torque - Vector3::new(mx, my, 0.0)).norm() < 1e-6,
+            "{torque:?} vs {mx}, {my}"
+        );
     }
 }

@@ -38,22 +38,22 @@ pub fn parse_obj<T: Real>(text: &str) -> Result<Shape<T>, Error> {
             Some("v") => {
                 let mut xyz = [0.0f64; 3];
                 for c in xyz.iter_mut() {
-                    let word = words
-                        .next()
-                        .ok_or_else(|| parse_error(number, "a vertex needs three coordinates".into()))?;
+                    let word = words.next().ok_or_else(|| {
+                        parse_error(number, "a vertex needs three coordinates".into())
+                    })?;
                     *c = word
                         .parse()
                         .map_err(|_| parse_error(number, format!("{word:?} is not a number")))?;
                 }
-                vertices.push(Point3::from(xyz.map(T::lit)));
+                vertices.push(Point3::from(xyz.map(T::from_f64_lossy)));
             }
             Some("f") => {
                 polygon.clear();
                 for word in words {
                     let index = word.split('/').next().unwrap_or("");
-                    let i: i64 = index
-                        .parse()
-                        .map_err(|_| parse_error(number, format!("{word:?} is not a vertex index")))?;
+                    let i: i64 = index.parse().map_err(|_| {
+                        parse_error(number, format!("{word:?} is not a vertex index"))
+                    })?;
                     let resolved = match i {
                         0 => None,
                         i if i > 0 => Some(i - 1),
@@ -70,7 +70,10 @@ pub fn parse_obj<T: Real>(text: &str) -> Result<Shape<T>, Error> {
                     polygon.push(resolved as u32);
                 }
                 if polygon.len() < 3 {
-                    return Err(parse_error(number, "a face needs at least three vertices".into()));
+                    return Err(parse_error(
+                        number,
+                        "a face needs at least three vertices".into(),
+                    ));
                 }
                 for k in 1..polygon.len() - 1 {
                     triangles.push([polygon[0], polygon[k], polygon[k + 1]]);
@@ -130,11 +133,15 @@ pub fn parse_stl<T: Real>(bytes: &[u8]) -> Result<Shape<T>, Error> {
             }
         }
     } else {
-        let n = declared.ok_or_else(|| parse_error(0, "shorter than an STL header (84 bytes)".into()))?;
+        let n = declared
+            .ok_or_else(|| parse_error(0, "shorter than an STL header (84 bytes)".into()))?;
         if bytes.len() < binary_size(n) {
             return Err(parse_error(
                 0,
-                format!("binary STL declares {n} triangles but holds only {} bytes", bytes.len()),
+                format!(
+                    "binary STL declares {n} triangles but holds only {} bytes",
+                    bytes.len()
+                ),
             ));
         }
         for record in bytes[84..binary_size(n)].chunks_exact(50) {
@@ -149,7 +156,11 @@ pub fn parse_stl<T: Real>(bytes: &[u8]) -> Result<Shape<T>, Error> {
     if triangles.is_empty() {
         return Err(parse_error(0, "no facets found".into()));
     }
-    let vertices = welder.vertices.into_iter().map(|p| Point3::from(p.map(T::lit))).collect();
+    let vertices = welder
+        .vertices
+        .into_iter()
+        .map(|p| Point3::from(p.map(T::from_f64_lossy)))
+        .collect();
     Ok((vertices, triangles))
 }
 
@@ -199,7 +210,7 @@ pub fn load<T: Real>(path: impl AsRef<std::path::Path>) -> Result<Shape<T>, Erro
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{shape, Mesh};
+    use crate::{Mesh, shape};
     use alloc::vec;
 
     fn binary_stl(v: &[Point3<f64>], t: &[[u32; 3]]) -> Vec<u8> {
@@ -246,7 +257,9 @@ mod tests {
         assert!(matches!(e, Error::Parse { line: 1, .. }), "{e}");
         let e = parse_obj::<f64>("v 0 0 0\n").unwrap_err();
         assert!(matches!(e, Error::Parse { line: 0, .. }), "{e}");
-        let (_, t) = parse_obj::<f64>("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf -4/1 -3/2 -2/3 -1/4\n").unwrap();
+        let (_, t) =
+            parse_obj::<f64>("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf -4/1 -3/2 -2/3 -1/4\n")
+                .unwrap();
         assert_eq!(t, vec![[0, 1, 2], [0, 2, 3]]);
     }
 
@@ -255,6 +268,9 @@ mod tests {
         let mut bytes = vec![0u8; 84];
         bytes[80] = 5;
         assert!(matches!(parse_stl::<f64>(&bytes), Err(Error::Parse { .. })));
-        assert!(matches!(parse_stl::<f64>(&[1, 2, 3]), Err(Error::Parse { .. })));
+        assert!(matches!(
+            parse_stl::<f64>(&[1, 2, 3]),
+            Err(Error::Parse { .. })
+        ));
     }
 }

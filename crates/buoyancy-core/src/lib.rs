@@ -35,8 +35,6 @@
 //! assert!(b.torque.norm() < 1e-9); // upright: the force acts through the center of mass
 //! ```
 #![no_std]
-#![deny(missing_docs)]
-#![warn(clippy::all)]
 
 extern crate alloc;
 #[cfg(feature = "std")]

@@ -129,10 +129,9 @@ impl<T: Real> Mesh<T> {
         // Everything below in f64, relative to the middle of the bounding box, so that f32
         // meshes and meshes far from their origin keep their digits.
         let points: Vec<Vector3<f64>> = vertices.iter().map(|p| p.coords.map(T::to_f64)).collect();
-        let (lo, hi) = points.iter().fold(
-            (points[0], points[0]),
-            |(lo, hi), p| (lo.inf(p), hi.sup(p)),
-        );
+        let (lo, hi) = points
+            .iter()
+            .fold((points[0], points[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
         let middle = (lo + hi) * 0.5;
         let (mut volume, mut moment, scale) = volume_moments(&points, &triangles, &middle);
         // Negated so that a NaN volume is rejected too.
@@ -165,7 +164,7 @@ impl<T: Real> Mesh<T> {
         }
         let surface_area: f64 = area2.iter().map(|a| a.norm() / 2.0).sum();
         let bounding_radius = relative.iter().map(|v| v.norm()).fold(0.0, f64::max);
-        let vertices: Vec<Vector3<T>> = relative.iter().map(|v| v.map(T::lit)).collect();
+        let vertices: Vec<Vector3<T>> = relative.iter().map(|v| v.map(T::from_f64_lossy)).collect();
         let (hierarchy, order) = Hierarchy::build(&vertices, &triangles, &volume6, &moment24);
         // Vertices renumbered by first use in leaf order.
         let mut vertex_slots = alloc::vec![u32::MAX; vertices.len()];
@@ -185,16 +184,24 @@ impl<T: Real> Mesh<T> {
             }
         }
         let vertices = renumbered;
-        let leaf_triangles: Vec<[u32; 3]> =
-            order.iter().map(|&i| triangles[i as usize].map(|k| vertex_slots[k as usize])).collect();
-        let surface_moments = NodeMoments::build(&hierarchy, |i| leaf_triangles[i].map(|k| vertices[k as usize]));
+        let leaf_triangles: Vec<[u32; 3]> = order
+            .iter()
+            .map(|&i| triangles[i as usize].map(|k| vertex_slots[k as usize]))
+            .collect();
+        let surface_moments = NodeMoments::build(&hierarchy, |i| {
+            leaf_triangles[i].map(|k| vertices[k as usize])
+        });
         let normals = order
             .iter()
             .map(|&i| {
                 let area2 = area2[i as usize];
                 let norm2 = area2.norm();
-                let normal = if norm2 > 0.0 { area2 / norm2 } else { Vector3::zeros() };
-                (normal.map(T::lit), T::lit(norm2))
+                let normal = if norm2 > 0.0 {
+                    area2 / norm2
+                } else {
+                    Vector3::zeros()
+                };
+                (normal.map(T::from_f64_lossy), T::from_f64_lossy(norm2))
             })
             .collect();
         Ok(Mesh {
@@ -203,15 +210,21 @@ impl<T: Real> Mesh<T> {
             vertex_slots,
             leaf_triangles,
             surface_moments,
-            tetra_volume6: order.iter().map(|&i| T::lit(volume6[i as usize])).collect(),
-            tetra_moment24: order.iter().map(|&i| moment24[i as usize].map(T::lit)).collect(),
+            tetra_volume6: order
+                .iter()
+                .map(|&i| T::from_f64_lossy(volume6[i as usize]))
+                .collect(),
+            tetra_moment24: order
+                .iter()
+                .map(|&i| moment24[i as usize].map(T::from_f64_lossy))
+                .collect(),
             hierarchy,
             triangles,
-            centroid: Point3::from(centroid.map(T::lit)),
-            volume: T::lit(volume),
-            volume_scale: T::lit(volume_scale),
-            bounding_radius: T::lit(bounding_radius),
-            surface_area: T::lit(surface_area),
+            centroid: Point3::from(centroid.map(T::from_f64_lossy)),
+            volume: T::from_f64_lossy(volume),
+            volume_scale: T::from_f64_lossy(volume_scale),
+            bounding_radius: T::from_f64_lossy(bounding_radius),
+            surface_area: T::from_f64_lossy(surface_area),
             reoriented,
         })
     }
@@ -375,7 +388,10 @@ mod tests {
         let (mut v, t) = tetrahedron();
         v.insert(0, Point3::new(5.0, 6.0, 7.0));
         v.swap(1, 4);
-        let t: Vec<[u32; 3]> = t.iter().map(|t| t.map(|k| [4, 2, 3, 1][k as usize])).collect();
+        let t: Vec<[u32; 3]> = t
+            .iter()
+            .map(|t| t.map(|k| [4, 2, 3, 1][k as usize]))
+            .collect();
         let m = Mesh::new(v.clone(), t.clone()).unwrap();
         assert_eq!(m.vertex_count(), 5);
         assert_eq!(m.triangles(), &t[..]);
@@ -388,7 +404,8 @@ mod tests {
         // Every leaf-order triangle is an input triangle, corners in the same order.
         for leaf in &m.leaf_triangles {
             let corners = leaf.map(|k| m.centroid + m.vertices[k as usize]);
-            let same = |t: &[u32; 3]| (0..3).all(|j| (v[t[j] as usize] - corners[j]).norm() < 1e-15);
+            let same =
+                |t: &[u32; 3]| (0..3).all(|j| (v[t[j] as usize] - corners[j]).norm() < 1e-15);
             assert!(t.iter().any(same), "{leaf:?}");
         }
     }
@@ -419,26 +436,39 @@ mod tests {
         out[3] = [1, 2, 9];
         assert_eq!(
             Mesh::new(v.clone(), out).unwrap_err(),
-            Error::IndexOutOfRange { triangle: 3, index: 9, vertex_count: 4 }
+            Error::IndexOutOfRange {
+                triangle: 3,
+                index: 9,
+                vertex_count: 4
+            }
         );
 
         let mut repeated = t.clone();
         repeated[1] = [0, 1, 1];
         assert_eq!(
             Mesh::new(v.clone(), repeated).unwrap_err(),
-            Error::RepeatedIndex { triangle: 1, indices: [0, 1, 1] }
+            Error::RepeatedIndex {
+                triangle: 1,
+                indices: [0, 1, 1]
+            }
         );
 
         assert_eq!(
             Mesh::new(v.clone(), t[..3].to_vec()).unwrap_err(),
-            Error::OpenEdge { edge: [1, 2], triangle: 0 }
+            Error::OpenEdge {
+                edge: [1, 2],
+                triangle: 0
+            }
         );
 
         let mut flipped = t.clone();
         flipped[3] = [1, 3, 2];
         assert_eq!(
             Mesh::new(v.clone(), flipped).unwrap_err(),
-            Error::InconsistentOrientation { edge: [2, 1], triangles: [0, 3] }
+            Error::InconsistentOrientation {
+                edge: [2, 1],
+                triangles: [0, 3]
+            }
         );
 
         // A fin: a fifth vertex and two triangles sharing edge (1, 2) with the tetrahedron.
@@ -448,7 +478,11 @@ mod tests {
         fin_t.extend([[1, 2, 4], [2, 1, 4]]);
         assert_eq!(
             Mesh::new(fin_v, fin_t).unwrap_err(),
-            Error::NonManifoldEdge { edge: [1, 2], triangle_count: 4, triangles: [0, 3] }
+            Error::NonManifoldEdge {
+                edge: [1, 2],
+                triangle_count: 4,
+                triangles: [0, 3]
+            }
         );
 
         // Two copies of one triangle, back to back: closed, but flat.
@@ -458,8 +492,14 @@ mod tests {
 
     #[test]
     fn messages_are_actionable() {
-        let e = Error::InconsistentOrientation { edge: [3, 5], triangles: [10, 12] };
+        let e = Error::InconsistentOrientation {
+            edge: [3, 5],
+            triangles: [10, 12],
+        };
         let s = alloc::format!("{e}");
-        assert!(s.contains("10") && s.contains("12") && s.contains("3 -> 5"), "{s}");
+        assert!(
+            s.contains("10") && s.contains("12") && s.contains("3 -> 5"),
+            "{s}"
+        );
     }
 }

@@ -9,7 +9,11 @@ pub(crate) fn join<A: Send, B: Send>(
     a: impl FnOnce() -> A + Send,
     b: impl FnOnce() -> B + Send,
 ) -> (A, B) {
-    if parallel { rayon::join(a, b) } else { (a(), b()) }
+    if parallel {
+        rayon::join(a, b)
+    } else {
+        (a(), b())
+    }
 }
 
 /// Runs `a`, then `b` (the `rayon` feature is off).

@@ -38,7 +38,7 @@
 use nalgebra::{Matrix3, Point3, UnitQuaternion, Vector3};
 
 use crate::hierarchy::Visit;
-use crate::integrals::{split, Counts, Split, Sums, SurfaceSums, VolumeSums};
+use crate::integrals::{Counts, Split, Sums, SurfaceSums, VolumeSums, split};
 use crate::parallel::join;
 use crate::surface_moments::SurfaceMoments;
 use crate::{Error, Mesh, Method, Pose, Real, Water};
@@ -211,7 +211,8 @@ impl<T: Real> Frame<T> {
         )?;
         let rotation = *unit.to_rotation_matrix().matrix();
         let normal = water.normal().into_inner();
-        let center_of_mass = Point3::from(rotation * mesh.centroid.coords) + pose.translation.vector;
+        let center_of_mass =
+            Point3::from(rotation * mesh.centroid.coords) + pose.translation.vector;
         Ok(Frame {
             rotation,
             normal,
@@ -226,7 +227,11 @@ impl<T: Real> Frame<T> {
     #[inline(always)]
     pub(crate) fn heights(&self, v: &[Vector3<T>; 3]) -> [T; 3] {
         let n = &self.normal_local;
-        [n.dot(&v[0]) + self.height, n.dot(&v[1]) + self.height, n.dot(&v[2]) + self.height]
+        [
+            n.dot(&v[0]) + self.height,
+            n.dot(&v[1]) + self.height,
+            n.dot(&v[2]) + self.height,
+        ]
     }
 
     /// The projection of the center of mass onto the surface, world frame.
@@ -318,9 +323,10 @@ impl<T: Real> Mesh<T> {
         };
         let result = match method {
             Method::Fast => {
-                let sums = self.volume_sums(&frame, hierarchy, parallel, |s: &mut VolumeSums<T>, i| {
-                    self.fast_triangle(&frame, s, i)
-                });
+                let sums =
+                    self.volume_sums(&frame, hierarchy, parallel, |s: &mut VolumeSums<T>, i| {
+                        self.fast_triangle(&frame, s, i)
+                    });
                 // Moments about the centroid.
                 self.volume_result(&frame, water, sums, Vector3::zeros())
             }
@@ -332,16 +338,27 @@ impl<T: Real> Mesh<T> {
                 // waterline segments. Only the waterline costs more than `Fast`.
                 let apex = n * -frame.height;
                 let improved = method == Method::Improved;
-                let [exact, clipped] = self.volume_sums(&frame, hierarchy, parallel, |s: &mut [VolumeSums<T>; 2], i| {
-                    self.exact_triangle(&frame, &apex, improved, s, i)
-                });
+                let [exact, clipped] = self.volume_sums(
+                    &frame,
+                    hierarchy,
+                    parallel,
+                    |s: &mut [VolumeSums<T>; 2], i| {
+                        self.exact_triangle(&frame, &apex, improved, s, i)
+                    },
+                );
                 if improved {
                     // Improved = tetrahedra from `apex` over the fully submerged triangles
                     // = the exact volume about `apex` minus the clipped parts about `apex`.
                     let volume6 = exact.volume6 - clipped.volume6;
                     // First moment about apex: Σ det·(a+b+c − 4·apex) = moment24 − 4·apex·volume6.
-                    let moment24 = exact.moment24 - apex * (T::lit(4.0) * exact.volume6) - clipped.moment24;
-                    let sums = VolumeSums { volume6, moment24, counts: exact.counts };
+                    let moment24 = exact.moment24
+                        - apex * (T::from_f64_lossy(4.0) * exact.volume6)
+                        - clipped.moment24;
+                    let sums = VolumeSums {
+                        volume6,
+                        moment24,
+                        counts: exact.counts,
+                    };
                     self.volume_result(&frame, water, sums, apex)
                 } else {
                     self.volume_result(&frame, water, exact, Vector3::zeros())
@@ -362,7 +379,14 @@ impl<T: Real> Mesh<T> {
                             s.counts.partial += 1;
                             if exact {
                                 // The corner at the odd vertex, or the whole triangle minus it.
-                                let Split { odd_is_below, a, ab, ca, heights, .. } = split(v, h);
+                                let Split {
+                                    odd_is_below,
+                                    a,
+                                    ab,
+                                    ca,
+                                    heights,
+                                    ..
+                                } = split(v, h);
                                 if odd_is_below {
                                     s.add_corner(&n, [a, ab, ca], heights[0], T::one());
                                 } else {
@@ -393,7 +417,11 @@ impl<T: Real> Mesh<T> {
     #[inline(always)]
     pub(crate) fn corners(&self, i: usize) -> [Vector3<T>; 3] {
         let [a, b, c] = self.leaf_triangles[i];
-        [self.vertices[a as usize], self.vertices[b as usize], self.vertices[c as usize]]
+        [
+            self.vertices[a as usize],
+            self.vertices[b as usize],
+            self.vertices[c as usize],
+        ]
     }
 
     /// Sums `triangle` over the triangles: over all of them (the scan, in parallel chunks when
@@ -409,19 +437,24 @@ impl<T: Real> Mesh<T> {
         if !hierarchy {
             return reduce(self.triangles.len(), parallel, &triangle);
         }
-        self.hierarchy.reduce(&frame.normal_local, frame.height, parallel, &|sums: &mut S, visit| match visit {
-            Visit::Submerged(index, count) => {
-                let (s, node) = (sums.exact_mut(), &self.hierarchy.sums[index]);
-                s.volume6 += node.volume6;
-                s.moment24 += node.moment24;
-                s.counts.full += count as usize;
-            }
-            Visit::Triangles(triangles) => {
-                for i in triangles {
-                    triangle(sums, i);
+        self.hierarchy.reduce(
+            &frame.normal_local,
+            frame.height,
+            parallel,
+            &|sums: &mut S, visit| match visit {
+                Visit::Submerged(index, count) => {
+                    let (s, node) = (sums.exact_mut(), &self.hierarchy.sums[index]);
+                    s.volume6 += node.volume6;
+                    s.moment24 += node.moment24;
+                    s.counts.full += count as usize;
                 }
-            }
-        })
+                Visit::Triangles(triangles) => {
+                    for i in triangles {
+                        triangle(sums, i);
+                    }
+                }
+            },
+        )
     }
 
     /// The surface sums over the hierarchy: the triangles of the leaves the surface crosses go
@@ -436,24 +469,29 @@ impl<T: Real> Mesh<T> {
         triangle: impl Fn(&mut SurfaceSums<T>, usize) + Sync,
     ) -> SurfaceSums<T> {
         let n = &frame.normal_local;
-        let WalkSums(mut sums, whole) = self.hierarchy.reduce(n, frame.height, parallel, &|walk: &mut WalkSums<T>, visit| {
-            let WalkSums(sums, whole) = walk;
-            let triangles = match visit {
-                Visit::Submerged(index, count) => match self.surface_moments.get(index) {
-                    Some(moments) => {
-                        whole.add(moments);
-                        sums.counts.full += count as usize;
-                        return;
-                    }
-                    // A leaf: no stored coefficients.
-                    None => self.hierarchy.range(index),
-                },
-                Visit::Triangles(triangles) => triangles,
-            };
-            for i in triangles {
-                triangle(sums, i);
-            }
-        });
+        let WalkSums(mut sums, whole) = self.hierarchy.reduce(
+            n,
+            frame.height,
+            parallel,
+            &|walk: &mut WalkSums<T>, visit| {
+                let WalkSums(sums, whole) = walk;
+                let triangles = match visit {
+                    Visit::Submerged(index, count) => match self.surface_moments.get(index) {
+                        Some(moments) => {
+                            whole.add(moments);
+                            sums.counts.full += count as usize;
+                            return;
+                        }
+                        // A leaf: no stored coefficients.
+                        None => self.hierarchy.range(index),
+                    },
+                    Visit::Triangles(triangles) => triangles,
+                };
+                for i in triangles {
+                    triangle(sums, i);
+                }
+            },
+        );
         whole.add_to(n, frame.height, &mut sums);
         sums
     }
@@ -510,7 +548,15 @@ impl<T: Real> Mesh<T> {
                 // (apex, ca, ab) give `det = a·x − apex·x`. When `a` is the one vertex above,
                 // the submerged part is the whole triangle (its precomputed tetrahedron) minus
                 // (a, ab, ca), and the cap's triangle is reversed: the same terms, negated.
-                let Split { odd_is_below, a, b, c, ab, ca, .. } = split(v, h);
+                let Split {
+                    odd_is_below,
+                    a,
+                    b,
+                    c,
+                    ab,
+                    ca,
+                    ..
+                } = split(v, h);
                 let x = ab.cross(&ca);
                 let (part, cap) = (a.dot(&x), apex.dot(&x));
                 let rim = ab + ca;
@@ -545,7 +591,7 @@ impl<T: Real> Mesh<T> {
 
     /// Below this |volume|, the center of buoyancy is round-off and is replaced by the surface point.
     fn volume_tolerance(&self) -> T {
-        self.volume_scale * T::default_epsilon() * T::lit(64.0)
+        self.volume_scale * T::default_epsilon() * T::from_f64_lossy(64.0)
     }
 
     /// Builds the result of a volume method from sums about `origin` (mesh frame, relative to
@@ -561,8 +607,8 @@ impl<T: Real> Mesh<T> {
         sums: VolumeSums<T>,
         origin: Vector3<T>,
     ) -> Buoyancy<T> {
-        let volume = sums.volume6 / T::lit(6.0);
-        let moment = sums.moment24 / T::lit(24.0);
+        let volume = sums.volume6 / T::from_f64_lossy(6.0);
+        let moment = sums.moment24 / T::from_f64_lossy(24.0);
         let weight = water.specific_weight();
         let center_of_buoyancy = if volume.abs() > self.volume_tolerance() {
             frame.center_of_mass + frame.rotation * (origin + moment / volume)
@@ -580,12 +626,18 @@ impl<T: Real> Mesh<T> {
     }
 
     /// Builds the result of a surface method from sums about the centroid (mesh frame).
-    fn surface_result(&self, frame: &Frame<T>, water: &Water<T>, sums: SurfaceSums<T>) -> Buoyancy<T> {
+    fn surface_result(
+        &self,
+        frame: &Frame<T>,
+        water: &Water<T>,
+        sums: SurfaceSums<T>,
+    ) -> Buoyancy<T> {
         let weight = water.specific_weight();
-        let force = sums.force6 / T::lit(6.0);
+        let force = sums.force6 / T::from_f64_lossy(6.0);
         let volume = frame.normal_local.dot(&force);
         let center_of_buoyancy = if volume.abs() > self.volume_tolerance() {
-            frame.center_of_mass + frame.rotation * (sums.moment24 / (T::lit(24.0) * volume))
+            frame.center_of_mass
+                + frame.rotation * (sums.moment24 / (T::from_f64_lossy(24.0) * volume))
         } else {
             frame.surface_point()
         };
@@ -595,7 +647,7 @@ impl<T: Real> Mesh<T> {
             volume,
             center_of_buoyancy,
             frame.rotation * force * weight,
-            frame.rotation * sums.torque24 * (weight / T::lit(24.0)),
+            frame.rotation * sums.torque24 * (weight / T::from_f64_lossy(24.0)),
         )
     }
 
@@ -664,7 +716,12 @@ fn classify<T: Real>(h: &[T; 3]) -> Side {
 /// Sums `add(&mut sums, i)` over `i in 0..len`, in chunks of [`CHUNK`] combined in a fixed
 /// pairwise tree, on rayon's pool when `parallel` (and the `rayon` feature) is on.
 fn reduce<S: Sums, F: Fn(&mut S, usize) + Sync>(len: usize, parallel: bool, add: &F) -> S {
-    fn range<S: Sums, F: Fn(&mut S, usize) + Sync>(lo: usize, hi: usize, parallel: bool, add: &F) -> S {
+    fn range<S: Sums, F: Fn(&mut S, usize) + Sync>(
+        lo: usize,
+        hi: usize,
+        parallel: bool,
+        add: &F,
+    ) -> S {
         if hi - lo <= CHUNK {
             let mut sums = S::zero();
             for i in lo..hi {
@@ -715,7 +772,9 @@ mod tests {
         let (v, t) = shape::cube::<f64>(2).unwrap();
         let cube = Mesh::new(v, t).unwrap();
         for method in Method::ALL {
-            let b = cube.buoyancy(&at(1.0, 3.0, 2.0), &Water::default(), method).unwrap();
+            let b = cube
+                .buoyancy(&at(1.0, 3.0, 2.0), &Water::default(), method)
+                .unwrap();
             assert_eq!(b.submerged_volume, 0.0);
             assert_eq!(b.force, Vector3::zeros());
             assert_eq!(b.torque, Vector3::zeros());
@@ -729,21 +788,35 @@ mod tests {
         let (v, t) = shape::cube::<f64>(1).unwrap();
         let cube = Mesh::new(v, t).unwrap();
         let w = Water::default();
-        let e = cube.buoyancy(&at(f64::NAN, 0.0, 0.0), &w, Method::Exact).unwrap_err();
+        let e = cube
+            .buoyancy(&at(f64::NAN, 0.0, 0.0), &w, Method::Exact)
+            .unwrap_err();
         assert!(matches!(e, Error::InvalidPose { .. }), "{e}");
         let mut pose = at(0.0, 0.0, 0.0);
-        pose.rotation = UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(0.0, 0.0, 0.0, 0.0));
-        assert!(matches!(cube.buoyancy(&pose, &w, Method::Exact), Err(Error::InvalidPose { .. })));
-        pose.rotation = UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(f64::INFINITY, 0.0, 0.0, 0.0));
-        assert!(matches!(cube.buoyancy(&pose, &w, Method::Exact), Err(Error::InvalidPose { .. })));
+        pose.rotation =
+            UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(0.0, 0.0, 0.0, 0.0));
+        assert!(matches!(
+            cube.buoyancy(&pose, &w, Method::Exact),
+            Err(Error::InvalidPose { .. })
+        ));
+        pose.rotation =
+            UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(f64::INFINITY, 0.0, 0.0, 0.0));
+        assert!(matches!(
+            cube.buoyancy(&pose, &w, Method::Exact),
+            Err(Error::InvalidPose { .. })
+        ));
         // A drifted quaternion is renormalised.
-        pose.rotation = UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(2.0, 0.0, 0.0, 0.0));
+        pose.rotation =
+            UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(2.0, 0.0, 0.0, 0.0));
         let b = cube.buoyancy(&pose, &w, Method::Exact).unwrap();
         assert!((b.submerged_volume - 0.5).abs() < 1e-14);
         // Overflow is reported, not returned as infinity.
         let huge = at(0.0, -1e300, 0.0);
         let big_water = Water::new(1e300, 1e10, Vector3::y(), 0.0).unwrap();
-        assert_eq!(cube.buoyancy(&huge, &big_water, Method::Exact), Err(Error::NonFiniteResult));
+        assert_eq!(
+            cube.buoyancy(&huge, &big_water, Method::Exact),
+            Err(Error::NonFiniteResult)
+        );
     }
 
     #[test]

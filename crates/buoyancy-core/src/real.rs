@@ -5,8 +5,8 @@ use nalgebra::RealField;
 /// Every type of this crate is generic over it; there is no mixed precision inside an
 /// evaluation.
 pub trait Real: RealField + Copy + Send + Sync + 'static {
-    /// Converts an `f64` constant to this scalar type (rounding for `f32`).
-    fn lit(x: f64) -> Self;
+    /// Converts an `f64` to this scalar type, rounding to the nearest `f32` for `f32`.
+    fn from_f64_lossy(x: f64) -> Self;
     /// Converts to `f64` (exact for both implementors).
     fn to_f64(self) -> f64;
     /// Converts from `f32` (exact for both implementors).
@@ -15,7 +15,7 @@ pub trait Real: RealField + Copy + Send + Sync + 'static {
 
 impl Real for f32 {
     #[inline(always)]
-    fn lit(x: f64) -> Self {
+    fn from_f64_lossy(x: f64) -> Self {
         x as f32
     }
     #[inline(always)]
@@ -30,7 +30,7 @@ impl Real for f32 {
 
 impl Real for f64 {
     #[inline(always)]
-    fn lit(x: f64) -> Self {
+    fn from_f64_lossy(x: f64) -> Self {
         x
     }
     #[inline(always)]

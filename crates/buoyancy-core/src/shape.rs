@@ -15,13 +15,31 @@ use crate::{Error, Real};
 /// Vertices and outward-wound triangles of a procedural mesh.
 pub type Shape<T> = (Vec<Point3<T>>, Vec<[u32; 3]>);
 
-fn finish<T: Real>(vertices: Vec<Point3<f64>>, triangles: Vec<[u32; 3]>) -> Result<Shape<T>, Error> {
-    Ok((vertices.into_iter().map(|p| p.map(T::lit)).collect(), triangles))
+fn finish<T: Real>(
+    vertices: Vec<Point3<f64>>,
+    triangles: Vec<[u32; 3]>,
+) -> Result<Shape<T>, Error> {
+    Ok((
+        vertices
+            .into_iter()
+            .map(|p| p.map(T::from_f64_lossy))
+            .collect(),
+        triangles,
+    ))
 }
 
 /// Checks that the count `value` is at least `min`.
-fn at_least(value: usize, min: usize, parameter: &'static str, reason: &'static str) -> Result<(), Error> {
-    if value >= min { Ok(()) } else { Err(Error::InvalidShape { parameter, reason }) }
+fn at_least(
+    value: usize,
+    min: usize,
+    parameter: &'static str,
+    reason: &'static str,
+) -> Result<(), Error> {
+    if value >= min {
+        Ok(())
+    } else {
+        Err(Error::InvalidShape { parameter, reason })
+    }
 }
 
 /// Checks that the length `value` is finite and positive.
@@ -29,7 +47,10 @@ fn positive(value: f64, parameter: &'static str) -> Result<(), Error> {
     if value.is_finite() && value > 0.0 {
         Ok(())
     } else {
-        Err(Error::InvalidShape { parameter, reason: "must be finite and positive" })
+        Err(Error::InvalidShape {
+            parameter,
+            reason: "must be finite and positive",
+        })
     }
 }
 
@@ -37,7 +58,10 @@ fn positive(value: f64, parameter: &'static str) -> Result<(), Error> {
 fn indexable(vertices: Option<usize>, parameter: &'static str) -> Result<(), Error> {
     match vertices {
         Some(count) if count <= u32::MAX as usize => Ok(()),
-        _ => Err(Error::InvalidShape { parameter, reason: "too large: the vertices would not fit u32 indices" }),
+        _ => Err(Error::InvalidShape {
+            parameter,
+            reason: "too large: the vertices would not fit u32 indices",
+        }),
     }
 }
 
@@ -48,7 +72,12 @@ fn indexable(vertices: Option<usize>, parameter: &'static str) -> Result<(), Err
 /// [`Error::InvalidShape`] if `n == 0` or `n` is too large for `u32` indices.
 pub fn cube<T: Real>(n: usize) -> Result<Shape<T>, Error> {
     at_least(n, 1, "n", "must be at least 1")?;
-    indexable(n.checked_mul(n).and_then(|n2| n2.checked_mul(6)).and_then(|v| v.checked_add(2)), "n")?;
+    indexable(
+        n.checked_mul(n)
+            .and_then(|n2| n2.checked_mul(6))
+            .and_then(|v| v.checked_add(2)),
+        "n",
+    )?;
     let side = n + 1;
     // Lattice points (i, j, k) ∈ [0, n]³ on the surface get an index on first use.
     let mut index = alloc::vec![u32::MAX; side * side * side];
@@ -58,7 +87,9 @@ pub fn cube<T: Real>(n: usize) -> Result<Shape<T>, Error> {
         let slot = &mut index[(p[0] * side + p[1]) * side + p[2]];
         if *slot == u32::MAX {
             *slot = vertices.len() as u32;
-            vertices.push(Point3::from(Vector3::from(p.map(|c| c as f64 / n as f64 - 0.5))));
+            vertices.push(Point3::from(Vector3::from(
+                p.map(|c| c as f64 / n as f64 - 0.5),
+            )));
         }
         *slot
     };
@@ -75,7 +106,8 @@ pub fn cube<T: Real>(n: usize) -> Result<Shape<T>, Error> {
                         p[v] = b + db;
                         p
                     };
-                    let q = [corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)].map(&mut vertex);
+                    let q =
+                        [corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)].map(&mut vertex);
                     triangles.push([q[0], q[1], q[2]]);
                     triangles.push([q[0], q[2], q[3]]);
                 }
@@ -96,7 +128,12 @@ pub fn uv_sphere<T: Real>(radius: f64, slices: usize, stacks: usize) -> Result<S
     positive(radius, "radius")?;
     at_least(slices, 3, "slices", "must be at least 3")?;
     at_least(stacks, 2, "stacks", "must be at least 2")?;
-    indexable(slices.checked_mul(stacks - 1).and_then(|v| v.checked_add(2)), "slices")?;
+    indexable(
+        slices
+            .checked_mul(stacks - 1)
+            .and_then(|v| v.checked_add(2)),
+        "slices",
+    )?;
     let mut vertices = Vec::with_capacity(2 + slices * (stacks - 1));
     vertices.push(Point3::new(0.0, radius, 0.0));
     for i in 1..stacks {
@@ -120,7 +157,12 @@ pub fn uv_sphere<T: Real>(radius: f64, slices: usize, stacks: usize) -> Result<S
     }
     for i in 1..stacks - 1 {
         for j in 0..slices {
-            let (a, b, c, d) = (ring(i, j), ring(i + 1, j), ring(i + 1, j + 1), ring(i, j + 1));
+            let (a, b, c, d) = (
+                ring(i, j),
+                ring(i + 1, j),
+                ring(i + 1, j + 1),
+                ring(i, j + 1),
+            );
             triangles.push([a, b, c]);
             triangles.push([a, c, d]);
         }
@@ -135,15 +177,26 @@ pub fn uv_sphere<T: Real>(radius: f64, slices: usize, stacks: usize) -> Result<S
 /// [`Error::InvalidShape`] if a radius is not finite and positive, `minor >= major` (the tube
 /// would cross itself), `segments < 3`, `sides < 3`, or there are too many vertices for `u32`
 /// indices.
-pub fn torus<T: Real>(major: f64, minor: f64, segments: usize, sides: usize) -> Result<Shape<T>, Error> {
+pub fn torus<T: Real>(
+    major: f64,
+    minor: f64,
+    segments: usize,
+    sides: usize,
+) -> Result<Shape<T>, Error> {
     positive(major, "major")?;
     positive(minor, "minor")?;
     if minor >= major {
-        return Err(Error::InvalidShape { parameter: "minor", reason: "must be smaller than major" });
+        return Err(Error::InvalidShape {
+            parameter: "minor",
+            reason: "must be smaller than major",
+        });
     }
     tube(segments, sides, minor, |u| {
         let (s, c) = (libm::sin(u), libm::cos(u));
-        (Vector3::new(major * c, 0.0, -major * s), Vector3::new(-s, 0.0, -c))
+        (
+            Vector3::new(major * c, 0.0, -major * s),
+            Vector3::new(-s, 0.0, -c),
+        )
     })
 }
 
@@ -169,7 +222,11 @@ pub fn torus_knot<T: Real>(
     let (p, q) = (p as f64, q as f64);
     let point = |u: f64| {
         let r = radius * (2.0 + libm::cos(q * u)) / 2.0;
-        Vector3::new(r * libm::cos(p * u), r * libm::sin(p * u), radius * libm::sin(q * u) / 2.0)
+        Vector3::new(
+            r * libm::cos(p * u),
+            r * libm::sin(p * u),
+            radius * libm::sin(q * u) / 2.0,
+        )
     };
     tube(segments, sides, tube_radius, move |u| {
         // Central differences: the tangent is only needed up to scale.
@@ -198,7 +255,11 @@ fn tube<T: Real>(
     let first_tangent = frames[0].1.normalize();
     let helper = [Vector3::x(), Vector3::y(), Vector3::z()]
         .into_iter()
-        .min_by(|a, b| a.dot(&first_tangent).abs().total_cmp(&b.dot(&first_tangent).abs()))
+        .min_by(|a, b| {
+            a.dot(&first_tangent)
+                .abs()
+                .total_cmp(&b.dot(&first_tangent).abs())
+        })
         .unwrap_or_else(Vector3::x);
     let mut normal = (helper - first_tangent * helper.dot(&first_tangent)).normalize();
     for (center, tangent) in &frames {
@@ -230,7 +291,12 @@ fn tube<T: Real>(
     let mut triangles = Vec::with_capacity(2 * segments * sides);
     for i in 0..segments {
         for j in 0..sides {
-            let (a, b, c, d) = (index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1));
+            let (a, b, c, d) = (
+                index(i, j),
+                index(i + 1, j),
+                index(i + 1, j + 1),
+                index(i, j + 1),
+            );
             triangles.push([a, d, c]);
             triangles.push([a, c, b]);
         }
@@ -266,7 +332,10 @@ mod tests {
         assert_eq!(shape(torus_knot(2, 0, 1.0, 0.25, 80, 11)), "q");
         assert_eq!(shape(torus_knot(2, 3, 1.0, 0.0, 80, 11)), "tube_radius");
         let message = alloc::string::ToString::to_string(&uv_sphere::<f64>(1.0, 2, 8).unwrap_err());
-        assert_eq!(message, "invalid shape parameter slices: must be at least 3");
+        assert_eq!(
+            message,
+            "invalid shape parameter slices: must be at least 3"
+        );
     }
 
     #[test]
@@ -289,7 +358,11 @@ mod tests {
         let m = Mesh::new(v, t).unwrap();
         assert!(!m.was_reoriented());
         let ball = 4.0 / 3.0 * PI;
-        assert!(m.volume() < ball && m.volume() > 0.99 * ball, "{}", m.volume());
+        assert!(
+            m.volume() < ball && m.volume() > 0.99 * ball,
+            "{}",
+            m.volume()
+        );
     }
 
     #[test]
@@ -301,7 +374,11 @@ mod tests {
         // radius 2 (the 64-gon's centroid is on the circle of radius 2).
         let polygon = |k: f64| k / TAU * libm::sin(TAU / k);
         let exact = PI * 0.25 * polygon(64.0) * TAU * 2.0 * polygon(128.0);
-        assert!((m.volume() / exact - 1.0).abs() < 1e-12, "{} vs {exact}", m.volume());
+        assert!(
+            (m.volume() / exact - 1.0).abs() < 1e-12,
+            "{} vs {exact}",
+            m.volume()
+        );
     }
 
     #[test]
@@ -317,12 +394,20 @@ mod tests {
                 let (a, b) = (TAU * i as f64 / 10000.0, TAU * (i + 1) as f64 / 10000.0);
                 let pt = |u: f64| {
                     let r = (2.0 + libm::cos(3.0 * u)) / 2.0;
-                    Vector3::new(r * libm::cos(2.0 * u), r * libm::sin(2.0 * u), libm::sin(3.0 * u) / 2.0)
+                    Vector3::new(
+                        r * libm::cos(2.0 * u),
+                        r * libm::sin(2.0 * u),
+                        libm::sin(3.0 * u) / 2.0,
+                    )
                 };
                 (pt(b) - pt(a)).norm()
             })
             .sum();
         let expected = PI * 0.25 * 0.25 * length;
-        assert!((m.volume() / expected - 1.0).abs() < 3e-3, "{} vs {expected}", m.volume());
+        assert!(
+            (m.volume() / expected - 1.0).abs() < 3e-3,
+            "{} vs {expected}",
+            m.volume()
+        );
     }
 }

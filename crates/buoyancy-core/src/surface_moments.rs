@@ -29,9 +29,9 @@ use alloc::vec::Vec;
 
 use nalgebra::{Matrix3, Vector3};
 
+use crate::Real;
 use crate::hierarchy::Hierarchy;
 use crate::integrals::SurfaceSums;
-use crate::Real;
 
 /// The pair `(j, l)` of each stored slice of `T`, in storage order.
 const PAIRS: [(usize, usize); 6] = [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)];
@@ -84,7 +84,12 @@ impl<T: Real> SurfaceMoments<T> {
     pub fn add_to(&self, n: &Vector3<T>, height: T, sums: &mut SurfaceSums<T>) {
         let g = &self.area_position;
         let t = &self.second;
-        let (three, four, eight, twelve) = (T::lit(3.0), T::lit(4.0), T::lit(8.0), T::lit(12.0));
+        let (three, four, eight, twelve) = (
+            T::from_f64_lossy(3.0),
+            T::from_f64_lossy(4.0),
+            T::from_f64_lossy(8.0),
+            T::from_f64_lossy(12.0),
+        );
         // Row j of M: Σₗ nₗ T[(j, l)].
         let m = Matrix3::from_rows(&[
             (t[pair(0, 0)] * n.x + t[pair(0, 1)] * n.y + t[pair(0, 2)] * n.z).transpose(),
@@ -98,8 +103,10 @@ impl<T: Real> SurfaceMoments<T> {
         let pressure = Vector3::new(m.m23 - m.m32, m.m31 - m.m13, m.m12 - m.m21);
         let s_cross_a = Vector3::new(g.m32 - g.m23, g.m13 - g.m31, g.m21 - g.m12);
         sums.torque24 += pressure + s_cross_a * (four * height);
-        let q = n.dot(&mn) + eight * height * n.dot(&gn) + twelve * height * height * n.dot(&self.area2);
-        sums.moment24 += mn + gtn * (four * height) - n * (q * T::lit(0.5));
+        let q = n.dot(&mn)
+            + eight * height * n.dot(&gn)
+            + twelve * height * height * n.dot(&self.area2);
+        sums.moment24 += mn + gtn * (four * height) - n * (q * T::from_f64_lossy(0.5));
     }
 }
 
@@ -108,7 +115,10 @@ impl SurfaceMoments<f64> {
     pub fn triangle(v: [Vector3<f64>; 3]) -> Self {
         let s = v[0] + v[1] + v[2];
         let area2 = (v[1] - v[0]).cross(&(v[2] - v[0]));
-        let q = v[0] * v[0].transpose() + v[1] * v[1].transpose() + v[2] * v[2].transpose() + s * s.transpose();
+        let q = v[0] * v[0].transpose()
+            + v[1] * v[1].transpose()
+            + v[2] * v[2].transpose()
+            + s * s.transpose();
         SurfaceMoments {
             area2,
             area_position: area2 * s.transpose(),
@@ -118,9 +128,9 @@ impl SurfaceMoments<f64> {
 
     fn cast<T: Real>(&self) -> SurfaceMoments<T> {
         SurfaceMoments {
-            area2: self.area2.map(T::lit),
-            area_position: self.area_position.map(T::lit),
-            second: self.second.map(|v| v.map(T::lit)),
+            area2: self.area2.map(T::from_f64_lossy),
+            area_position: self.area_position.map(T::from_f64_lossy),
+            second: self.second.map(|v| v.map(T::from_f64_lossy)),
         }
     }
 }
@@ -175,7 +185,9 @@ fn subtree<T: Real>(
         None => {
             let mut total = SurfaceMoments::zero();
             for i in hierarchy.range(index) {
-                total.add(&SurfaceMoments::triangle(corners(i).map(|v| v.map(T::to_f64))));
+                total.add(&SurfaceMoments::triangle(
+                    corners(i).map(|v| v.map(T::to_f64)),
+                ));
             }
             total
         }
@@ -227,7 +239,10 @@ mod tests {
                 (summed.torque24, direct.torque24, "pressure moment"),
                 (summed.moment24, direct.moment24, "volume moment"),
             ] {
-                assert!((a - b).norm() < 1e-12 * (1.0 + b.norm()), "{what} at H = {height}: {a:?} vs {b:?}");
+                assert!(
+                    (a - b).norm() < 1e-12 * (1.0 + b.norm()),
+                    "{what} at H = {height}: {a:?} vs {b:?}"
+                );
             }
         }
     }

@@ -32,8 +32,8 @@ pub struct Water<T: Real> {
 impl<T: Real> Default for Water<T> {
     fn default() -> Self {
         Water {
-            density: T::lit(1000.0),
-            gravity: T::lit(9.81),
+            density: T::from_f64_lossy(1000.0),
+            gravity: T::from_f64_lossy(9.81),
             normal: Vector3::y_axis(),
             level: T::zero(),
         }

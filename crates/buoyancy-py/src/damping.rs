@@ -91,15 +91,15 @@ impl PyDampingCoefficients {
             Some(c) if !c.is_none() => convert::vector3(c, "current")?,
             _ => Vector3::zeros(),
         };
-        Ok(PyDampingCoefficients {
-            inner: DampingCoefficients {
-                linear: coefficient(linear, "linear")?,
-                drag_coefficient: coefficient(drag_coefficient, "drag_coefficient")?,
-                angular_linear: coefficient(angular_linear, "angular_linear")?,
-                angular_quadratic: coefficient(angular_quadratic, "angular_quadratic")?,
-                current,
-            },
-        })
+        let inner = DampingCoefficients::new(
+            coefficient(linear, "linear")?,
+            coefficient(drag_coefficient, "drag_coefficient")?,
+            coefficient(angular_linear, "angular_linear")?,
+            coefficient(angular_quadratic, "angular_quadratic")?,
+        )
+        .and_then(|c| c.with_current(current))
+        .map_err(|e| crate::to_py(e, None))?;
+        Ok(PyDampingCoefficients { inner })
     }
 
     /// No damping at all: ``Mesh.damping`` then returns zero force and torque.
@@ -116,27 +116,27 @@ impl PyDampingCoefficients {
     /// Linear pressure-drag coefficient, Pa per m/s.
     #[getter]
     fn linear(&self) -> f64 {
-        self.inner.linear
+        self.inner.linear_drag()
     }
     /// Dimensionless quadratic pressure-drag coefficient ``C_D``.
     #[getter]
     fn drag_coefficient(&self) -> f64 {
-        self.inner.drag_coefficient
+        self.inner.drag_coefficient()
     }
     /// Linear angular damping rate, 1/s.
     #[getter]
     fn angular_linear(&self) -> f64 {
-        self.inner.angular_linear
+        self.inner.angular_drag_linear()
     }
     /// Dimensionless quadratic angular damping coefficient.
     #[getter]
     fn angular_quadratic(&self) -> f64 {
-        self.inner.angular_quadratic
+        self.inner.angular_drag_quadratic()
     }
     /// Velocity of the water, world frame, m/s, shape (3,).
     #[getter]
     fn current<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_slice(py, self.inner.current.as_slice())
+        PyArray1::from_slice(py, self.inner.current().as_slice())
     }
     /// Whether every coefficient is zero (the current alone damps nothing).
     #[getter]
@@ -148,13 +148,13 @@ impl PyDampingCoefficients {
         let c = &self.inner;
         format!(
             "DampingCoefficients(linear={}, drag_coefficient={}, angular_linear={}, angular_quadratic={}, current=({}, {}, {}))",
-            g(c.linear),
-            g(c.drag_coefficient),
-            g(c.angular_linear),
-            g(c.angular_quadratic),
-            g(c.current.x),
-            g(c.current.y),
-            g(c.current.z)
+            g(c.linear_drag()),
+            g(c.drag_coefficient()),
+            g(c.angular_drag_linear()),
+            g(c.angular_drag_quadratic()),
+            g(c.current().x),
+            g(c.current().y),
+            g(c.current().z)
         )
     }
 
@@ -164,11 +164,11 @@ impl PyDampingCoefficients {
         (
             slf.get_type(),
             (
-                c.linear,
-                c.drag_coefficient,
-                c.angular_linear,
-                c.angular_quadratic,
-                (c.current.x, c.current.y, c.current.z),
+                c.linear_drag(),
+                c.drag_coefficient(),
+                c.angular_drag_linear(),
+                c.angular_drag_quadratic(),
+                (c.current().x, c.current().y, c.current().z),
             ),
         )
     }

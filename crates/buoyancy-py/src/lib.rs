@@ -3,6 +3,10 @@
 //! Thin: every computation is the core's; this crate converts arguments (naming the argument
 //! in each error), releases the interpreter lock around the work, and runs batches of poses on
 //! rayon. The Python package `buoyancy` (python/buoyancy) re-exports it.
+//!
+//! The doc comments of the Python-facing items are their Python docstrings (numpydoc, with
+//! `>>>` examples), not rustdoc: brackets in them are slices, not links.
+#![allow(rustdoc::broken_intra_doc_links)]
 
 mod convert;
 mod damping;
@@ -37,7 +41,7 @@ const DETACH_TRIANGLES: usize = 4096;
 
 /// The Python exception for a core error: mesh problems are `MeshError`, file problems
 /// `OSError`, everything else `ValueError`, prefixed with the argument's name when known.
-fn to_py(e: Error, argument: Option<&str>) -> PyErr {
+pub(crate) fn to_py(e: Error, argument: Option<&str>) -> PyErr {
     if let Error::InvalidShape { parameter, reason } = e {
         return arg_error(parameter, reason);
     }
@@ -755,14 +759,20 @@ fn load(py: Python<'_>, path: PathBuf) -> PyResult<PyMesh> {
 #[pyfunction]
 #[pyo3(signature = (n=1))]
 fn cube(py: Python<'_>, n: usize) -> PyResult<PyMesh> {
-    PyMesh::build(py, buoyancy_core::shape::cube(n).map_err(|e| to_py(e, None))?)
+    PyMesh::build(
+        py,
+        buoyancy_core::shape::cube(n).map_err(|e| to_py(e, None))?,
+    )
 }
 
 /// A UV sphere about the origin (2·slices·(stacks − 1) triangles).
 #[pyfunction]
 #[pyo3(signature = (radius=1.0, slices=32, stacks=16))]
 fn uv_sphere(py: Python<'_>, radius: f64, slices: usize, stacks: usize) -> PyResult<PyMesh> {
-    PyMesh::build(py, buoyancy_core::shape::uv_sphere(radius, slices, stacks).map_err(|e| to_py(e, None))?)
+    PyMesh::build(
+        py,
+        buoyancy_core::shape::uv_sphere(radius, slices, stacks).map_err(|e| to_py(e, None))?,
+    )
 }
 
 /// A torus about the y axis (2·segments·sides triangles).
@@ -795,7 +805,8 @@ fn torus_knot(
 ) -> PyResult<PyMesh> {
     PyMesh::build(
         py,
-        buoyancy_core::shape::torus_knot(p, q, radius, tube_radius, segments, sides).map_err(|e| to_py(e, None))?,
+        buoyancy_core::shape::torus_knot(p, q, radius, tube_radius, segments, sides)
+            .map_err(|e| to_py(e, None))?,
     )
 }
 

@@ -10,25 +10,34 @@
 use std::path::PathBuf;
 
 use buoyancy_core::nalgebra::Point3;
-use buoyancy_core::{shape, Mesh};
+use buoyancy_core::{Mesh, shape};
 use buoyancy_rapier::{FloatOptions, FloatingBodies};
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::{Criterion, criterion_group, criterion_main};
 use rapier3d::prelude::*;
 
 fn bunny() -> (String, Mesh<f64>) {
     let dir = std::env::var_os("BUOYANCY_MESHES")
         .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/meshes"));
+        .unwrap_or_else(|| {
+            PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/meshes")
+        });
     let (name, (v, t)) = match buoyancy_core::io::load::<f64>(dir.join("bunny.obj")) {
         Ok(shape) => ("bunny".to_string(), shape),
         Err(_) => {
-            eprintln!("note: bunny.obj not found (set BUOYANCY_MESHES); benchmarking the procedural torus knot");
-            ("torus knot".to_string(), shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16).unwrap())
+            eprintln!(
+                "note: bunny.obj not found (set BUOYANCY_MESHES); benchmarking the procedural torus knot"
+            );
+            (
+                "torus knot".to_string(),
+                shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16).unwrap(),
+            )
         }
     };
     let mesh = Mesh::new(v, t).unwrap();
     let (c, k) = (mesh.centroid(), 0.3 / mesh.bounding_radius());
-    let v = (0..mesh.vertex_count()).map(|i| Point3::from((mesh.vertex(i) - c) * k)).collect();
+    let v = (0..mesh.vertex_count())
+        .map(|i| Point3::from((mesh.vertex(i) - c) * k))
+        .collect();
     (name, Mesh::new(v, mesh.triangles().to_vec()).unwrap())
 }
 
@@ -36,17 +45,43 @@ fn step(c: &mut Criterion) {
     let (name, mesh) = bunny();
     let mut world = PhysicsWorld::default();
     let mut water = FloatingBodies::new(world.gravity);
-    let vertices: Vec<Vector> = (0..mesh.vertex_count()).map(|i| { let p = mesh.vertex(i); Vector::new(p.x as f32, p.y as f32, p.z as f32) }).collect();
+    let vertices: Vec<Vector> = (0..mesh.vertex_count())
+        .map(|i| {
+            let p = mesh.vertex(i);
+            Vector::new(p.x as f32, p.y as f32, p.z as f32)
+        })
+        .collect();
     for i in 0..100 {
         // Half-submerged, tilted and moving: every body has waterline triangles to clip and drag.
-        let pose = Pose::from_parts(Vector::new((i % 10) as f32, -0.05 + 0.01 * (i % 7) as f32, (i / 10) as f32), Rotation::from_scaled_axis(Vector::new(0.1 * (i % 5) as f32, 0.3, 0.0)));
-        let body = RigidBodyBuilder::dynamic().pose(pose).linvel(Vector::new(0.2, -0.5, 0.1)).angvel(Vector::new(0.3, 0.0, -0.2));
-        let collider = ColliderBuilder::trimesh(vertices.clone(), mesh.triangles().to_vec()).unwrap().density(500.0);
+        let pose = Pose::from_parts(
+            Vector::new(
+                (i % 10) as f32,
+                -0.05 + 0.01 * (i % 7) as f32,
+                (i / 10) as f32,
+            ),
+            Rotation::from_scaled_axis(Vector::new(0.1 * (i % 5) as f32, 0.3, 0.0)),
+        );
+        let body = RigidBodyBuilder::dynamic()
+            .pose(pose)
+            .linvel(Vector::new(0.2, -0.5, 0.1))
+            .angvel(Vector::new(0.3, 0.0, -0.2));
+        let collider = ColliderBuilder::trimesh(vertices.clone(), mesh.triangles().to_vec())
+            .unwrap()
+            .density(500.0);
         let (h, _) = world.insert(body, collider);
-        water.register(h, &world.bodies, &world.colliders, FloatOptions::default()).unwrap();
+        water
+            .register(h, &world.bodies, &world.colliders, FloatOptions::default())
+            .unwrap();
     }
-    let mode = if cfg!(feature = "rayon") { "rayon" } else { "serial" };
-    let id = format!("adapter step, 100 × {name} ({} triangles), {mode}", mesh.triangle_count());
+    let mode = if cfg!(feature = "rayon") {
+        "rayon"
+    } else {
+        "serial"
+    };
+    let id = format!(
+        "adapter step, 100 × {name} ({} triangles), {mode}",
+        mesh.triangle_count()
+    );
     let dt = world.integration_parameters.dt;
     c.bench_function(&id, |b| b.iter(|| water.apply(&mut world.bodies, dt)));
 }

@@ -23,7 +23,9 @@ pub(crate) fn vector_to_rapier(v: &Vector3<f64>) -> Vector {
 
 /// A rapier pose as an `f64` nalgebra isometry (the quaternion renormalised in `f64`).
 pub(crate) fn pose_to_nalgebra(pose: &Pose) -> Isometry3<f64> {
-    let rotation = UnitQuaternion::<f32>::from(pose.rotation).into_inner().cast::<f64>();
+    let rotation = UnitQuaternion::<f32>::from(pose.rotation)
+        .into_inner()
+        .cast::<f64>();
     Isometry3::from_parts(
         Translation3::from(vector_to_nalgebra(pose.translation)),
         UnitQuaternion::new_normalize(rotation),

@@ -45,7 +45,10 @@ impl fmt::Display for Error {
             Error::UnknownBody(h) => write!(f, "rigid body {h:?} is not in the RigidBodySet"),
             Error::UnknownCollider(h) => write!(f, "collider {h:?} is not in the ColliderSet"),
             Error::NotAttached { collider, body } => {
-                write!(f, "collider {collider:?} is not attached to rigid body {body:?}")
+                write!(
+                    f,
+                    "collider {collider:?} is not attached to rigid body {body:?}"
+                )
             }
             Error::NothingToFloat(h) => write!(
                 f,

@@ -83,7 +83,6 @@
 //! model says, and part of its net weight taken off while it jitters. Gravity is taken as the
 //! water's (`g` against its normal, times the body's gravity scale). A body whose pose, velocity
 //! or result is not finite gets no force from the adapter (and the previous one is taken back).
-#![warn(missing_docs)]
 
 mod convert;
 mod error;
@@ -94,13 +93,15 @@ use std::collections::HashMap;
 use buoyancy_core::nalgebra::{Matrix3, Point3, Vector3};
 use buoyancy_core::{DampingCoefficients, Mesh, Method, Pose, Water};
 use rapier3d::math::Vector;
-use rapier3d::prelude::{ColliderHandle, ColliderSet, RigidBody, RigidBodyHandle, RigidBodySet, RigidBodyType};
+use rapier3d::prelude::{
+    ColliderHandle, ColliderSet, RigidBody, RigidBodyHandle, RigidBodySet, RigidBodyType,
+};
 
 pub use buoyancy_core;
 pub use error::Error;
 
 use convert::{point_to_nalgebra, pose_to_nalgebra, vector_to_nalgebra, vector_to_rapier};
-use shapes::{append_meshes, FloatingPart};
+use shapes::{FloatingPart, append_meshes};
 
 /// Which colliders of a body float.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -240,7 +241,13 @@ impl FloatingBodies {
         let g = vector_to_nalgebra(gravity);
         let water = Water::default()
             .with_gravity(g.norm())
-            .and_then(|w| if g.norm() > 0.0 { w.with_surface(-g, 0.0) } else { Ok(w) })
+            .and_then(|w| {
+                if g.norm() > 0.0 {
+                    w.with_surface(-g, 0.0)
+                } else {
+                    Ok(w)
+                }
+            })
             .unwrap_or_default();
         FloatingBodies {
             water,
@@ -262,7 +269,9 @@ impl FloatingBodies {
     }
     /// The same world with the surface at `level` m along its normal.
     pub fn with_level(mut self, level: f64) -> Result<Self, Error> {
-        self.water = self.water.with_surface(self.water.normal().into_inner(), level)?;
+        self.water = self
+            .water
+            .with_surface(self.water.normal().into_inner(), level)?;
         Ok(self)
     }
     /// The world's method.
@@ -325,12 +334,25 @@ impl FloatingBodies {
         };
         let mut parts = Vec::new();
         for handle in selected {
-            let collider = colliders.get(handle).ok_or(Error::UnknownCollider(handle))?;
+            let collider = colliders
+                .get(handle)
+                .ok_or(Error::UnknownCollider(handle))?;
             let shape_to_body = match (collider.parent(), collider.position_wrt_parent()) {
                 (Some(parent), Some(pose)) if parent == body => pose_to_nalgebra(pose),
-                _ => return Err(Error::NotAttached { collider: handle, body }),
+                _ => {
+                    return Err(Error::NotAttached {
+                        collider: handle,
+                        body,
+                    });
+                }
             };
-            append_meshes(handle, collider.shape(), shape_to_body, options.subdivisions, &mut parts)?;
+            append_meshes(
+                handle,
+                collider.shape(),
+                shape_to_body,
+                options.subdivisions,
+                &mut parts,
+            )?;
         }
         if parts.is_empty() {
             return Err(Error::NothingToFloat(body));
@@ -362,7 +384,9 @@ impl FloatingBodies {
     /// Stops `body` from floating and takes back the force and torque the adapter added to it.
     /// Returns whether it was registered.
     pub fn unregister(&mut self, body: RigidBodyHandle, bodies: &mut RigidBodySet) -> bool {
-        let Some(i) = self.index.remove(&body) else { return false };
+        let Some(i) = self.index.remove(&body) else {
+            return false;
+        };
         let removed = self.bodies.swap_remove(i);
         if let Some(moved) = self.bodies.get(i) {
             self.index.insert(moved.handle, i);
@@ -395,10 +419,12 @@ impl FloatingBodies {
     /// The meshes a body floats with (one per shape, in the shape's frame) and their
     /// shape → body poses.
     pub fn meshes(&self, body: RigidBodyHandle) -> impl Iterator<Item = (&Mesh<f64>, &Pose<f64>)> {
-        self.index
-            .get(&body)
-            .into_iter()
-            .flat_map(move |&i| self.bodies[i].parts.iter().map(|p| (&p.mesh, &p.shape_to_body)))
+        self.index.get(&body).into_iter().flat_map(move |&i| {
+            self.bodies[i]
+                .parts
+                .iter()
+                .map(|p| (&p.mesh, &p.shape_to_body))
+        })
     }
 
     /// Computes buoyancy and damping for every registered body at its current pose and
@@ -416,7 +442,12 @@ impl FloatingBodies {
         // Forget removed bodies.
         if self.bodies.iter().any(|b| !bodies.contains(b.handle)) {
             self.bodies.retain(|b| bodies.contains(b.handle));
-            self.index = self.bodies.iter().enumerate().map(|(i, b)| (b.handle, i)).collect();
+            self.index = self
+                .bodies
+                .iter()
+                .enumerate()
+                .map(|(i, b)| (b.handle, i))
+                .collect();
         }
         let world = (&self.water, self.method, &self.damping);
         let shared: &RigidBodySet = bodies;
@@ -425,7 +456,11 @@ impl FloatingBodies {
             // Force and torque both exactly zero while the adapter's share is not: rapier wiped
             // them (its NaN quarantine does, or `reset_forces` + `reset_torques`).
             let ours = b.applied_force != Vector::ZERO || b.applied_torque != Vector::ZERO;
-            if ours && rb.is_dynamic() && rb.user_force() == Vector::ZERO && rb.user_torque() == Vector::ZERO {
+            if ours
+                && rb.is_dynamic()
+                && rb.user_force() == Vector::ZERO
+                && rb.user_torque() == Vector::ZERO
+            {
                 (b.applied_force, b.applied_torque) = (Vector::ZERO, Vector::ZERO);
             }
             let (report, wrench) = evaluate(b, rb, world, f64::from(dt));
@@ -441,7 +476,9 @@ impl FloatingBodies {
         self.bodies.iter_mut().for_each(compute);
 
         for b in &mut self.bodies {
-            let Some((force, torque)) = b.pending.take() else { continue };
+            let Some((force, torque)) = b.pending.take() else {
+                continue;
+            };
             let rb = &mut bodies[b.handle];
             let sleeping = rb.is_sleeping();
             // Wake a sleeping body only for a change that matters (say the water moved), measured
@@ -489,7 +526,10 @@ fn take_back(rb: &mut RigidBody, force: Vector, torque: Vector) {
 fn mass_matrices(rb: &RigidBody) -> (Vector3<f64>, Matrix3<f64>, Matrix3<f64>) {
     let props = rb.mass_properties();
     let i = &props.effective_world_inv_inertia;
-    let inv_inertia = Matrix3::new(i.m11, i.m12, i.m13, i.m12, i.m22, i.m23, i.m13, i.m23, i.m33).cast::<f64>();
+    let inv_inertia = Matrix3::new(
+        i.m11, i.m12, i.m13, i.m12, i.m22, i.m23, i.m13, i.m23, i.m33,
+    )
+    .cast::<f64>();
     let mut invertible = inv_inertia;
     for k in 0..3 {
         if invertible[(k, k)] == 0.0 {
@@ -497,7 +537,11 @@ fn mass_matrices(rb: &RigidBody) -> (Vector3<f64>, Matrix3<f64>, Matrix3<f64>) {
         }
     }
     let inertia = invertible.try_inverse().unwrap_or_else(Matrix3::zeros);
-    (vector_to_nalgebra(props.effective_inv_mass), inv_inertia, inertia)
+    (
+        vector_to_nalgebra(props.effective_inv_mass),
+        inv_inertia,
+        inertia,
+    )
 }
 
 /// Buoyancy + damping of one body: its report and the force and torque to hold (rapier types,
@@ -511,9 +555,20 @@ fn evaluate(
 ) -> (FloatReport, Option<(Vector, Vector)>) {
     let center_of_mass = point_to_nalgebra(rb.center_of_mass());
     let zero = Some((Vector::ZERO, Vector::ZERO));
-    let skipped = FloatReport { center_of_mass, center_of_buoyancy: center_of_mass, skipped: true, ..Default::default() };
+    let skipped = FloatReport {
+        center_of_mass,
+        center_of_buoyancy: center_of_mass,
+        skipped: true,
+        ..Default::default()
+    };
     if !rb.is_dynamic() || !rb.is_enabled() {
-        return (FloatReport { skipped: false, ..skipped }, None);
+        return (
+            FloatReport {
+                skipped: false,
+                ..skipped
+            },
+            None,
+        );
     }
     let water = b.options.water.as_ref().unwrap_or(world_water);
     let method = b.options.method.unwrap_or(world_method);
@@ -525,17 +580,26 @@ fn evaluate(
     // The core's angular damping is per mesh, −f·ρ·V^{5/3}·(a₁ + a₂|ω|)·ω: with several parts,
     // each part's term is replaced by one for the whole body (total volume and wetted fraction).
     let several = b.parts.len() > 1;
-    let angular_rate = damping.angular_linear + damping.angular_quadratic * omega.norm();
+    let angular_rate =
+        damping.angular_drag_linear() + damping.angular_drag_quadratic() * omega.norm();
     let angular_size = |volume: f64| water.density() * volume.max(0.0).powf(5.0 / 3.0);
 
-    let mut report = FloatReport { center_of_mass, ..Default::default() };
+    let mut report = FloatReport {
+        center_of_mass,
+        ..Default::default()
+    };
     let mut weighted_center = Vector3::zeros();
     for part in &b.parts {
         let pose = body_pose * part.shape_to_body;
-        let Ok(buoyancy) = part.mesh.buoyancy(&pose, water, method) else { return (skipped, zero) };
+        let Ok(buoyancy) = part.mesh.buoyancy(&pose, water, method) else {
+            return (skipped, zero);
+        };
         // The core takes the velocity of the mesh's own centroid.
         let centroid_velocity = velocity + omega.cross(&(buoyancy.torque_point - center_of_mass));
-        let Ok(drag) = part.mesh.damping(&pose, &centroid_velocity, &omega, water, damping) else {
+        let Ok(drag) = part
+            .mesh
+            .damping(&pose, &centroid_velocity, &omega, water, damping)
+        else {
             return (skipped, zero);
         };
         report.submerged_volume += buoyancy.submerged_volume;
@@ -545,7 +609,8 @@ fn evaluate(
         report.damping_force += drag.force;
         report.damping_torque += drag.torque_about(&center_of_mass);
         if several {
-            report.damping_torque += omega * (drag.wetted_fraction * angular_size(part.mesh.volume()) * angular_rate);
+            report.damping_torque +=
+                omega * (drag.wetted_fraction * angular_size(part.mesh.volume()) * angular_rate);
         }
         report.wetted_area += drag.wetted_area;
     }
@@ -565,17 +630,23 @@ fn evaluate(
     // other forces G (buoyancy, gravity, the application's own): W' = (W − α·dt·G)/(1 + α·dt).
     let (inv_mass, inv_inertia, inertia) = mass_matrices(rb);
     let (damping_force, damping_torque) = (report.damping_force, report.damping_torque);
-    let relative_velocity = velocity - damping.current;
+    let relative_velocity = velocity - damping.current();
     // W·M⁻¹W and q̇·M·q̇ (locked axes left out).
-    let wrench_norm2 = damping_force.dot(&inv_mass.component_mul(&damping_force)) + damping_torque.dot(&(inv_inertia * damping_torque));
+    let wrench_norm2 = damping_force.dot(&inv_mass.component_mul(&damping_force))
+        + damping_torque.dot(&(inv_inertia * damping_torque));
     let linear_momentum_norm2: f64 = (0..3)
         .filter(|&i| inv_mass[i] > 0.0)
         .map(|i| relative_velocity[i] * relative_velocity[i] / inv_mass[i])
         .sum();
     let velocity_norm2 = linear_momentum_norm2 + omega.dot(&(inertia * omega));
-    let rate = if wrench_norm2 > 0.0 && velocity_norm2 > 0.0 { (wrench_norm2 / velocity_norm2).sqrt() } else { 0.0 };
+    let rate = if wrench_norm2 > 0.0 && velocity_norm2 > 0.0 {
+        (wrench_norm2 / velocity_norm2).sqrt()
+    } else {
+        0.0
+    };
     if rate > 0.0 && dt > 0.0 {
-        let gravity = -water.normal().into_inner() * (water.gravity() * f64::from(rb.gravity_scale()));
+        let gravity =
+            -water.normal().into_inner() * (water.gravity() * f64::from(rb.gravity_scale()));
         let own_force = vector_to_nalgebra(rb.user_force() - b.applied_force);
         let own_torque = vector_to_nalgebra(rb.user_torque() - b.applied_torque);
         let mut other_force = report.buoyancy_force + gravity * f64::from(rb.mass()) + own_force;
@@ -593,7 +664,10 @@ fn evaluate(
     let force = report.buoyancy_force + report.damping_force;
     let torque = report.buoyancy_torque + report.damping_torque;
     let (force, torque) = (vector_to_rapier(&force), vector_to_rapier(&torque));
-    if !(force.is_finite() && torque.is_finite() && report.center_of_buoyancy.iter().all(|c| c.is_finite())) {
+    if !(force.is_finite()
+        && torque.is_finite()
+        && report.center_of_buoyancy.iter().all(|c| c.is_finite()))
+    {
         return (skipped, zero);
     }
     (report, Some((force, torque)))

@@ -5,8 +5,8 @@ use buoyancy_core::{Mesh, Pose};
 use rapier3d::parry::shape::{Shape, TypedShape};
 use rapier3d::prelude::ColliderHandle;
 
-use crate::convert::{pose_to_nalgebra, vector_to_nalgebra};
 use crate::Error;
+use crate::convert::{pose_to_nalgebra, vector_to_nalgebra};
 
 /// A closed mesh of one (sub-)shape of a collider, with its place on the body.
 #[derive(Debug, Clone)]
@@ -42,7 +42,13 @@ pub(crate) fn append_meshes(
         TypedShape::ConvexPolyhedron(c) => with_weld(c.to_trimesh()),
         TypedShape::Compound(c) => {
             for (pose, sub) in c.shapes() {
-                append_meshes(collider, sub.as_ref(), shape_to_body * pose_to_nalgebra(pose), subdivisions, parts)?;
+                append_meshes(
+                    collider,
+                    sub.as_ref(),
+                    shape_to_body * pose_to_nalgebra(pose),
+                    subdivisions,
+                    parts,
+                )?;
             }
             return Ok(());
         }
@@ -53,13 +59,19 @@ pub(crate) fn append_meshes(
             });
         }
     };
-    let mut points: Vec<Point3<f64>> = vertices.iter().map(|v| Point3::from(vector_to_nalgebra(*v))).collect();
+    let mut points: Vec<Point3<f64>> = vertices
+        .iter()
+        .map(|v| Point3::from(vector_to_nalgebra(*v)))
+        .collect();
     let mut triangles = triangles;
     if weld {
         weld_vertices(&mut points, &mut triangles);
     }
     let mesh = Mesh::new(points, triangles).map_err(|source| Error::Mesh { collider, source })?;
-    parts.push(FloatingPart { mesh, shape_to_body });
+    parts.push(FloatingPart {
+        mesh,
+        shape_to_body,
+    });
     Ok(())
 }
 
@@ -73,7 +85,9 @@ fn weld_vertices(points: &mut [Point3<f64>], triangles: &mut Vec<[u32; 3]>) {
     if points.is_empty() {
         return;
     }
-    let (lo, hi) = points.iter().fold((points[0], points[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
+    let (lo, hi) = points
+        .iter()
+        .fold((points[0], points[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
     let tolerance = 1e-6 * (hi - lo).norm().max(f64::MIN_POSITIVE);
     let mut order: Vec<usize> = (0..points.len()).collect();
     order.sort_by(|&a, &b| points[a].x.total_cmp(&points[b].x));
@@ -94,4 +108,3 @@ fn weld_vertices(points: &mut [Point3<f64>], triangles: &mut Vec<[u32; 3]>) {
     }
     triangles.retain(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0]);
 }
-

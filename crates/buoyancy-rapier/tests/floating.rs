@@ -4,7 +4,7 @@ mod common;
 
 use buoyancy_core::nalgebra::Vector3;
 use buoyancy_rapier::FloatOptions;
-use common::{model, tilt_degrees, trimesh, Pool};
+use common::{Pool, model, tilt_degrees, trimesh};
 use rapier3d::prelude::*;
 
 const WATER_DENSITY: f32 = 1000.0;
@@ -21,14 +21,24 @@ fn cube_upright_when_stable() {
         let mut pool = Pool::new();
         // Dropped from just above, slightly tilted: it must right itself.
         let tilt = Rotation::from_axis_angle(Vector::new(1.0, 0.0, 1.0).normalize(), 0.1);
-        let h = pool.add(RigidBodyBuilder::dynamic().pose(Pose::from_parts(Vector::new(0.0, 0.8, 0.0), tilt)), unit_cube(s));
+        let h = pool.add(
+            RigidBodyBuilder::dynamic().pose(Pose::from_parts(Vector::new(0.0, 0.8, 0.0), tilt)),
+            unit_cube(s),
+        );
         pool.run(40.0);
         let rb = pool.body(h);
         let gm = s / 2.0 + 1.0 / (12.0 * s) - 0.5;
         assert!(gm > 0.0);
-        assert!(tilt_degrees(rb) < 0.5, "s = {s}: tilt {}°", tilt_degrees(rb));
+        assert!(
+            tilt_degrees(rb) < 0.5,
+            "s = {s}: tilt {}°",
+            tilt_degrees(rb)
+        );
         let draft = 0.5 - rb.translation().y;
-        assert!((draft - s).abs() < 0.005 * s.max(0.1) + 1e-4, "s = {s}: draft {draft}");
+        assert!(
+            (draft - s).abs() < 0.005 * s.max(0.1) + 1e-4,
+            "s = {s}: draft {draft}"
+        );
         pool.assert_equilibrium(h, 1.0, &format!("cube s = {s}"));
     }
 }
@@ -41,11 +51,20 @@ fn cube_tips_when_upright_is_unstable() {
         let gm = s / 2.0 + 1.0 / (12.0 * s) - 0.5;
         assert!(gm < 0.0);
         let mut pool = Pool::new();
-        let tilt = Rotation::from_axis_angle(Vector::new(1.0, 0.0, 0.3).normalize(), 3f32.to_radians());
-        let h = pool.add(RigidBodyBuilder::dynamic().pose(Pose::from_parts(Vector::new(0.0, 0.5 - s, 0.0), tilt)), unit_cube(s));
+        let tilt =
+            Rotation::from_axis_angle(Vector::new(1.0, 0.0, 0.3).normalize(), 3f32.to_radians());
+        let h = pool.add(
+            RigidBodyBuilder::dynamic()
+                .pose(Pose::from_parts(Vector::new(0.0, 0.5 - s, 0.0), tilt)),
+            unit_cube(s),
+        );
         pool.run(60.0);
         let rb = pool.body(h);
-        assert!(tilt_degrees(rb) > 10.0, "s = {s}: still upright, tilt {}°", tilt_degrees(rb));
+        assert!(
+            tilt_degrees(rb) > 10.0,
+            "s = {s}: still upright, tilt {}°",
+            tilt_degrees(rb)
+        );
         pool.assert_equilibrium(h, 1.0, &format!("tipped cube s = {s}"));
     }
 }
@@ -68,11 +87,18 @@ fn sphere_at_the_analytic_cap_height() {
         let (mut lo, mut hi) = (0.0, 2.0 * r);
         for _ in 0..100 {
             let d = (lo + hi) / 2.0;
-            if d * d * (3.0 * r - d) < target { lo = d } else { hi = d }
+            if d * d * (3.0 * r - d) < target {
+                lo = d
+            } else {
+                hi = d
+            }
         }
         let center_height = r - lo;
         let y = pool.body(h).translation().y as f64;
-        assert!((y - center_height).abs() < 0.01 * r, "s = {s}: center at {y} m, analytic {center_height} m");
+        assert!(
+            (y - center_height).abs() < 0.01 * r,
+            "s = {s}: center at {y} m, analytic {center_height} m"
+        );
         pool.assert_equilibrium(h, 2.0 * r, &format!("sphere s = {s}"));
     }
 }
@@ -81,13 +107,24 @@ fn sphere_at_the_analytic_cap_height() {
 #[test]
 fn long_flat_box_floats_flat() {
     let mut pool = Pool::new();
-    let start = Rotation::from_axis_angle(Vector::X, 0.2) * Rotation::from_axis_angle(Vector::Z, 0.1);
-    let h = pool.add(RigidBodyBuilder::dynamic().pose(Pose::from_parts(Vector::new(0.0, 0.5, 0.0), start)), ColliderBuilder::cuboid(1.0, 0.1, 0.25).density(500.0));
+    let start =
+        Rotation::from_axis_angle(Vector::X, 0.2) * Rotation::from_axis_angle(Vector::Z, 0.1);
+    let h = pool.add(
+        RigidBodyBuilder::dynamic().pose(Pose::from_parts(Vector::new(0.0, 0.5, 0.0), start)),
+        ColliderBuilder::cuboid(1.0, 0.1, 0.25).density(500.0),
+    );
     pool.run(60.0);
     let rb = pool.body(h);
     let up = *rb.rotation() * Vector::Y;
-    assert!(up.y > 0.9999f32.min(1.0f32.to_radians().cos()) || up.y < -0.9998, "the thin axis is not vertical: {up:?}");
-    assert!(rb.translation().y.abs() < 0.002, "center {} m from the surface, expected 0", rb.translation().y);
+    assert!(
+        up.y > 0.9999f32.min(1.0f32.to_radians().cos()) || up.y < -0.9998,
+        "the thin axis is not vertical: {up:?}"
+    );
+    assert!(
+        rb.translation().y.abs() < 0.002,
+        "center {} m from the surface, expected 0",
+        rb.translation().y
+    );
     pool.assert_equilibrium(h, 2.0, "flat box");
 }
 
@@ -97,7 +134,10 @@ fn bunny_and_torus_knot_equilibrium() {
     for (file, s) in [("bunny.obj", 0.6f32), ("torusknot.obj", 0.4)] {
         let (name, mesh) = model(file, 0.4);
         let mut pool = Pool::new();
-        let h = pool.add(RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 0.5, 0.0)), trimesh(&mesh).density(s * WATER_DENSITY));
+        let h = pool.add(
+            RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 0.5, 0.0)),
+            trimesh(&mesh).density(s * WATER_DENSITY),
+        );
         pool.run(60.0);
         pool.assert_equilibrium(h, 0.8, &name);
     }
@@ -107,7 +147,10 @@ fn bunny_and_torus_knot_equilibrium() {
 #[test]
 fn denser_body_sinks() {
     let mut pool = Pool::new();
-    let h = pool.add(RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 1.0, 0.0)), unit_cube(1.5));
+    let h = pool.add(
+        RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 1.0, 0.0)),
+        unit_cube(1.5),
+    );
     pool.run(10.0);
     let rb = pool.body(h);
     assert!(rb.translation().y < -5.0, "at {}", rb.translation().y);
@@ -116,23 +159,37 @@ fn denser_body_sinks() {
     let net = 0.5 * 1000.0 * 9.81;
     let (c1, c2) = (1000.0f32, 500.0f32);
     let u = (-c1 + (c1 * c1 + 4.0 * c2 * net).sqrt()) / (2.0 * c2);
-    assert!((rb.linvel().y + u).abs() < 0.05 * u, "sinks at {} m/s, terminal {u} m/s", -rb.linvel().y);
+    assert!(
+        (rb.linvel().y + u).abs() < 0.05 * u,
+        "sinks at {} m/s, terminal {u} m/s",
+        -rb.linvel().y
+    );
 }
 
 /// A body spawned 10 m deep rises, breaks the surface and settles.
 #[test]
 fn spawned_deep_rises_and_settles() {
     let mut pool = Pool::new();
-    let h = pool.add(RigidBodyBuilder::dynamic().translation(Vector::new(0.0, -10.0, 0.0)), unit_cube(0.9));
+    let h = pool.add(
+        RigidBodyBuilder::dynamic().translation(Vector::new(0.0, -10.0, 0.0)),
+        unit_cube(0.9),
+    );
     let mut highest = f32::MIN;
     for _ in 0..60 * 60 {
         pool.step();
         highest = highest.max(pool.body(h).translation().y);
         assert!(pool.body(h).translation().is_finite());
     }
-    assert!(highest > -0.5 + 0.1, "never reached the surface: highest {highest}");
+    assert!(
+        highest > -0.5 + 0.1,
+        "never reached the surface: highest {highest}"
+    );
     let y = pool.body(h).translation().y;
-    assert!((y - (0.5 - 0.9)).abs() < 0.005, "settled at {y}, tilt {}°", tilt_degrees(pool.body(h)));
+    assert!(
+        (y - (0.5 - 0.9)).abs() < 0.005,
+        "settled at {y}, tilt {}°",
+        tilt_degrees(pool.body(h))
+    );
     pool.assert_equilibrium(h, 1.0, "cube spawned deep");
 }
 
@@ -140,19 +197,37 @@ fn spawned_deep_rises_and_settles() {
 #[test]
 fn extreme_spawns_stay_finite() {
     let mut pool = Pool::new();
-    let fast = pool.add(RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 2.0, 0.0)).linvel(Vector::new(3.0, -80.0, 0.0)), unit_cube(0.1));
-    let light_deep = pool.add(RigidBodyBuilder::dynamic().translation(Vector::new(5.0, -200.0, 0.0)).angvel(Vector::new(20.0, 0.0, 5.0)), ColliderBuilder::ball(0.05).density(10.0));
-    let above = pool.add(RigidBodyBuilder::dynamic().translation(Vector::new(-5.0, 1000.0, 0.0)), unit_cube(0.5));
+    let fast = pool.add(
+        RigidBodyBuilder::dynamic()
+            .translation(Vector::new(0.0, 2.0, 0.0))
+            .linvel(Vector::new(3.0, -80.0, 0.0)),
+        unit_cube(0.1),
+    );
+    let light_deep = pool.add(
+        RigidBodyBuilder::dynamic()
+            .translation(Vector::new(5.0, -200.0, 0.0))
+            .angvel(Vector::new(20.0, 0.0, 5.0)),
+        ColliderBuilder::ball(0.05).density(10.0),
+    );
+    let above = pool.add(
+        RigidBodyBuilder::dynamic().translation(Vector::new(-5.0, 1000.0, 0.0)),
+        unit_cube(0.5),
+    );
     for step in 0..60 * 20 {
         pool.step();
         if step == 60 {
             // Still far above the water: no force at all.
             let r = pool.water.report(above).unwrap();
-            assert_eq!((r.buoyancy_force, r.damping_force), (Vector3::zeros(), Vector3::zeros()));
+            assert_eq!(
+                (r.buoyancy_force, r.damping_force),
+                (Vector3::zeros(), Vector3::zeros())
+            );
         }
         for h in [fast, light_deep, above] {
             let rb = pool.body(h);
-            assert!(rb.translation().is_finite() && rb.linvel().is_finite() && rb.angvel().is_finite());
+            assert!(
+                rb.translation().is_finite() && rb.linvel().is_finite() && rb.angvel().is_finite()
+            );
             // Never faster than the free fall from the highest start, or the deep body's rise.
             assert!(rb.linvel().length() < 200.0, "{:?}", rb.linvel());
         }
@@ -164,7 +239,10 @@ fn extreme_spawns_stay_finite() {
 #[test]
 fn user_thrust_survives_steps() {
     let mut pool = Pool::new();
-    let h = pool.add(RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 0.0, 0.0)), unit_cube(0.5));
+    let h = pool.add(
+        RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 0.0, 0.0)),
+        unit_cube(0.5),
+    );
     pool.run(5.0);
     let thrust = Vector::new(200.0, 0.0, 0.0);
     let torque = Vector::new(0.0, 5.0, 0.0);
@@ -177,13 +255,24 @@ fn user_thrust_survives_steps() {
         let r = pool.water.report(h).unwrap();
         let adapter_force = (r.buoyancy_force + r.damping_force).cast::<f32>();
         let own = rb.user_force() - Vector::new(adapter_force.x, adapter_force.y, adapter_force.z);
-        assert!((own - thrust).length() < 1e-3 * thrust.length() + 1e-2, "the application's force became {own:?}");
+        assert!(
+            (own - thrust).length() < 1e-3 * thrust.length() + 1e-2,
+            "the application's force became {own:?}"
+        );
         let adapter_torque = (r.buoyancy_torque + r.damping_torque).cast::<f32>();
-        let own_torque = rb.user_torque() - Vector::new(adapter_torque.x, adapter_torque.y, adapter_torque.z);
-        assert!((own_torque - torque).length() < 1e-3 * torque.length() + 1e-2, "the application's torque became {own_torque:?}");
+        let own_torque =
+            rb.user_torque() - Vector::new(adapter_torque.x, adapter_torque.y, adapter_torque.z);
+        assert!(
+            (own_torque - torque).length() < 1e-3 * torque.length() + 1e-2,
+            "the application's torque became {own_torque:?}"
+        );
     }
     let rb = pool.body(h);
-    assert!(rb.translation().x - x0 > 2.0, "the thrust did not push: moved {}", rb.translation().x - x0);
+    assert!(
+        rb.translation().x - x0 > 2.0,
+        "the thrust did not push: moved {}",
+        rb.translation().x - x0
+    );
     assert!(rb.angvel().y > 0.0, "the torque did not turn it");
     // Taking the body out of the water leaves exactly the application's forces.
     let mut bodies = std::mem::take(&mut pool.world.bodies);
@@ -197,27 +286,67 @@ fn user_thrust_survives_steps() {
 fn per_body_water_and_errors() {
     let mut pool = Pool::new();
     let raised = pool.water.water().with_surface(Vector3::y(), 2.0).unwrap();
-    let high = pool.add_with(RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 3.0, 0.0)), unit_cube(0.5), FloatOptions::default().water(raised).method(buoyancy_core::Method::ExactSurface));
-    let low = pool.add(RigidBodyBuilder::dynamic().translation(Vector::new(3.0, 1.0, 0.0)), unit_cube(0.5));
+    let high = pool.add_with(
+        RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 3.0, 0.0)),
+        unit_cube(0.5),
+        FloatOptions::default()
+            .water(raised)
+            .method(buoyancy_core::Method::ExactSurface),
+    );
+    let low = pool.add(
+        RigidBodyBuilder::dynamic().translation(Vector::new(3.0, 1.0, 0.0)),
+        unit_cube(0.5),
+    );
     pool.run(20.0);
     assert!((pool.body(high).translation().y - 2.0).abs() < 0.005);
     assert!(pool.body(low).translation().y.abs() < 0.005);
 
     // Errors name the problem.
-    let (fixed, _) = pool.world.insert(RigidBodyBuilder::fixed(), ColliderBuilder::halfspace(rapier3d::na::Unit::new_unchecked(Vector::Y)));
-    let e = pool.water.register(fixed, &pool.world.bodies, &pool.world.colliders, FloatOptions::default()).unwrap_err();
-    assert!(matches!(e, buoyancy_rapier::Error::UnsupportedShape { .. }), "{e}");
+    let (fixed, _) = pool.world.insert(
+        RigidBodyBuilder::fixed(),
+        ColliderBuilder::halfspace(rapier3d::na::Unit::new_unchecked(Vector::Y)),
+    );
+    let e = pool
+        .water
+        .register(
+            fixed,
+            &pool.world.bodies,
+            &pool.world.colliders,
+            FloatOptions::default(),
+        )
+        .unwrap_err();
+    assert!(
+        matches!(e, buoyancy_rapier::Error::UnsupportedShape { .. }),
+        "{e}"
+    );
     let empty = pool.world.bodies.insert(RigidBodyBuilder::dynamic());
-    let e = pool.water.register(empty, &pool.world.bodies, &pool.world.colliders, FloatOptions::default()).unwrap_err();
+    let e = pool
+        .water
+        .register(
+            empty,
+            &pool.world.bodies,
+            &pool.world.colliders,
+            FloatOptions::default(),
+        )
+        .unwrap_err();
     assert_eq!(e, buoyancy_rapier::Error::NothingToFloat(empty));
 }
 
 /// Compound, cylinder, capsule, cone and convex shapes float with the volume rapier gives them.
 #[test]
 fn every_supported_shape_floats() {
-    let hull = ColliderBuilder::convex_hull(&[Vector::new(-0.4, -0.3, -0.3), Vector::new(0.4, -0.3, -0.3), Vector::new(0.0, 0.4, -0.3), Vector::new(0.0, 0.0, 0.4)]).unwrap();
+    let hull = ColliderBuilder::convex_hull(&[
+        Vector::new(-0.4, -0.3, -0.3),
+        Vector::new(0.4, -0.3, -0.3),
+        Vector::new(0.0, 0.4, -0.3),
+        Vector::new(0.0, 0.0, 0.4),
+    ])
+    .unwrap();
     let compound = ColliderBuilder::compound(vec![
-        (Pose::translation(-0.4, 0.0, 0.0), SharedShape::cuboid(0.2, 0.2, 0.2)),
+        (
+            Pose::translation(-0.4, 0.0, 0.0),
+            SharedShape::cuboid(0.2, 0.2, 0.2),
+        ),
         (Pose::translation(0.4, 0.0, 0.0), SharedShape::ball(0.25)),
     ]);
     let shapes: Vec<(&str, ColliderBuilder)> = vec![
@@ -229,14 +358,22 @@ fn every_supported_shape_floats() {
     ];
     for (name, collider) in shapes {
         let mut pool = Pool::new();
-        let h = pool.add_with(RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 0.5, 0.0)), collider.density(600.0), FloatOptions::default().subdivisions(64));
+        let h = pool.add_with(
+            RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 0.5, 0.0)),
+            collider.density(600.0),
+            FloatOptions::default().subdivisions(64),
+        );
         pool.run(40.0);
         pool.water.apply(&mut pool.world.bodies, 1.0 / 60.0);
         let rb = pool.body(h);
         let r = pool.water.report(h).unwrap();
         // rapier's mass uses the exact round volumes, the mesh is inscribed: 1 % here.
         let expected = rb.mass() as f64 / 1000.0;
-        assert!((r.submerged_volume - expected).abs() < 0.01 * expected, "{name}: {} vs {expected}", r.submerged_volume);
+        assert!(
+            (r.submerged_volume - expected).abs() < 0.01 * expected,
+            "{name}: {} vs {expected}",
+            r.submerged_volume
+        );
         assert!(rb.linvel().length() < 0.01, "{name} still moves");
     }
 }
@@ -244,7 +381,8 @@ fn every_supported_shape_floats() {
 /// Total mechanical energy of the bodies: kinetic, gravitational, and the hydrostatic potential
 /// `−ρ g V_sub h_B` (`h_B` the height of the center of buoyancy above the surface).
 fn mechanical_energy(pool: &mut Pool, handles: &[RigidBodyHandle]) -> f64 {
-    pool.water.apply(&mut pool.world.bodies, pool.world.integration_parameters.dt);
+    pool.water
+        .apply(&mut pool.world.bodies, pool.world.integration_parameters.dt);
     let water = *pool.water.water();
     handles
         .iter()
@@ -253,7 +391,8 @@ fn mechanical_energy(pool: &mut Pool, handles: &[RigidBodyHandle]) -> f64 {
             let r = pool.water.report(h).unwrap();
             let kinetic = rb.kinetic_energy() as f64;
             let gravity = rb.mass() as f64 * water.gravity() * water.height(&r.center_of_mass);
-            let hydrostatic = -water.specific_weight() * r.submerged_volume * water.height(&r.center_of_buoyancy);
+            let hydrostatic =
+                -water.specific_weight() * r.submerged_volume * water.height(&r.center_of_buoyancy);
             kinetic + gravity + hydrostatic
         })
         .sum()
@@ -268,7 +407,9 @@ fn hundred_mixed_bodies_settle() {
     let mut handles = Vec::new();
     let mut seed = 12345u64;
     let mut random = || {
-        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         (seed >> 11) as f32 / (1u64 << 53) as f32
     };
     for i in 0..100 {
@@ -280,28 +421,47 @@ fn hundred_mixed_bodies_settle() {
             3 => ColliderBuilder::capsule_y(0.15, 0.15),
             4 => ColliderBuilder::cone(0.25, 0.25),
             5 => ColliderBuilder::compound(vec![
-                (Pose::translation(-0.2, 0.0, 0.0), SharedShape::cuboid(0.15, 0.15, 0.15)),
+                (
+                    Pose::translation(-0.2, 0.0, 0.0),
+                    SharedShape::cuboid(0.15, 0.15, 0.15),
+                ),
                 (Pose::translation(0.2, 0.0, 0.0), SharedShape::ball(0.15)),
             ]),
             _ => trimesh(&bunny),
         };
-        let position = Vector::new((i % 10) as f32 * 1.5 - 7.0, 1.0 + 4.0 * random(), (i / 10) as f32 * 1.5 - 7.0);
+        let position = Vector::new(
+            (i % 10) as f32 * 1.5 - 7.0,
+            1.0 + 4.0 * random(),
+            (i / 10) as f32 * 1.5 - 7.0,
+        );
         let rotation = Rotation::from_scaled_axis(Vector::new(random(), random(), random()) * 2.0);
-        let body = RigidBodyBuilder::dynamic().pose(Pose::from_parts(position, rotation)).linvel(Vector::new(0.0, -3.0 * random(), 0.0));
-        handles.push(pool.add_with(body, collider.density(s * WATER_DENSITY), FloatOptions::default().subdivisions(16)));
+        let body = RigidBodyBuilder::dynamic()
+            .pose(Pose::from_parts(position, rotation))
+            .linvel(Vector::new(0.0, -3.0 * random(), 0.0));
+        handles.push(pool.add_with(
+            body,
+            collider.density(s * WATER_DENSITY),
+            FloatOptions::default().subdivisions(16),
+        ));
     }
     let mut energies = Vec::new();
     for second in 1..=20 {
         pool.run(1.0);
         for &h in &handles {
             let rb = pool.body(h);
-            assert!(rb.translation().is_finite() && rb.linvel().is_finite() && rb.angvel().is_finite(), "NaN at {second} s");
+            assert!(
+                rb.translation().is_finite() && rb.linvel().is_finite() && rb.angvel().is_finite(),
+                "NaN at {second} s"
+            );
         }
         if second >= 5 {
             energies.push(mechanical_energy(&mut pool, &handles));
             // Every body in the water by 5 s, and from then on.
             for &h in &handles {
-                assert!(pool.water.report(h).unwrap().submerged_volume > 0.0, "a body is out of the water at {second} s");
+                assert!(
+                    pool.water.report(h).unwrap().submerged_volume > 0.0,
+                    "a body is out of the water at {second} s"
+                );
             }
         }
     }

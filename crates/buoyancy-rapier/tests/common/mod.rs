@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use buoyancy_core::{shape, Mesh};
+use buoyancy_core::{Mesh, shape};
 use buoyancy_rapier::{FloatOptions, FloatingBodies};
 use rapier3d::prelude::*;
 
@@ -21,19 +21,31 @@ impl Pool {
     }
 
     /// Adds a dynamic body that never sleeps, and makes it float.
-    pub fn add(&mut self, body: RigidBodyBuilder, collider: impl Into<Collider>) -> RigidBodyHandle {
+    pub fn add(
+        &mut self,
+        body: RigidBodyBuilder,
+        collider: impl Into<Collider>,
+    ) -> RigidBodyHandle {
         self.add_with(body, collider, FloatOptions::default())
     }
 
-    pub fn add_with(&mut self, body: RigidBodyBuilder, collider: impl Into<Collider>, options: FloatOptions) -> RigidBodyHandle {
+    pub fn add_with(
+        &mut self,
+        body: RigidBodyBuilder,
+        collider: impl Into<Collider>,
+        options: FloatOptions,
+    ) -> RigidBodyHandle {
         let (handle, _) = self.world.insert(body.can_sleep(false), collider);
-        self.water.register(handle, &self.world.bodies, &self.world.colliders, options).unwrap();
+        self.water
+            .register(handle, &self.world.bodies, &self.world.colliders, options)
+            .unwrap();
         handle
     }
 
     /// One step: buoyancy and damping, then rapier.
     pub fn step(&mut self) {
-        self.water.apply(&mut self.world.bodies, self.world.integration_parameters.dt);
+        self.water
+            .apply(&mut self.world.bodies, self.world.integration_parameters.dt);
         self.world.step();
     }
 
@@ -51,17 +63,31 @@ impl Pool {
     /// Checks the equilibrium conditions: submerged volume = m/ρ within 0.5 %, the center of
     /// buoyancy on the vertical through the center of mass within 1 % of `size`, at rest.
     pub fn assert_equilibrium(&mut self, h: RigidBodyHandle, size: f64, what: &str) {
-        self.water.apply(&mut self.world.bodies, self.world.integration_parameters.dt);
+        self.water
+            .apply(&mut self.world.bodies, self.world.integration_parameters.dt);
         let rb = &self.world.bodies[h];
         let report = *self.water.report(h).unwrap();
         let expected = rb.mass() as f64 / self.water.water().density();
         let volume_error = (report.submerged_volume - expected).abs() / expected;
-        assert!(volume_error < 0.005, "{what}: submerged {} m³ vs m/ρ = {expected} m³ ({:.3} %)", report.submerged_volume, volume_error * 100.0);
+        assert!(
+            volume_error < 0.005,
+            "{what}: submerged {} m³ vs m/ρ = {expected} m³ ({:.3} %)",
+            report.submerged_volume,
+            volume_error * 100.0
+        );
         let up = self.water.water().normal().into_inner();
         let offset = report.center_of_buoyancy - report.center_of_mass;
         let horizontal = (offset - up * up.dot(&offset)).norm();
-        assert!(horizontal <= 0.01 * size, "{what}: center of buoyancy {horizontal} m off the vertical through the center of mass (size {size} m)");
-        assert!(rb.linvel().length() < 0.02 && rb.angvel().length() < 0.02, "{what}: not at rest: v {:?} ω {:?}", rb.linvel(), rb.angvel());
+        assert!(
+            horizontal <= 0.01 * size,
+            "{what}: center of buoyancy {horizontal} m off the vertical through the center of mass (size {size} m)"
+        );
+        assert!(
+            rb.linvel().length() < 0.02 && rb.angvel().length() < 0.02,
+            "{what}: not at rest: v {:?} ω {:?}",
+            rb.linvel(),
+            rb.angvel()
+        );
     }
 }
 
@@ -69,7 +95,10 @@ impl Pool {
 /// of a box is horizontal.
 pub fn tilt_degrees(rb: &RigidBody) -> f32 {
     let r = rb.rotation();
-    let cos = [Vector::X, Vector::Y, Vector::Z].iter().map(|a| (*r * *a).y.abs()).fold(0.0f32, f32::max);
+    let cos = [Vector::X, Vector::Y, Vector::Z]
+        .iter()
+        .map(|a| (*r * *a).y.abs())
+        .fold(0.0f32, f32::max);
     cos.min(1.0).acos().to_degrees()
 }
 
@@ -78,7 +107,9 @@ pub fn tilt_degrees(rb: &RigidBody) -> f32 {
 pub fn meshes_dir() -> Option<PathBuf> {
     let dir = std::env::var_os("BUOYANCY_MESHES")
         .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/meshes"));
+        .unwrap_or_else(|| {
+            PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/meshes")
+        });
     dir.is_dir().then_some(dir)
 }
 
@@ -89,19 +120,31 @@ pub fn model(file: &str, radius: f64) -> (String, Mesh<f64>) {
     let (name, (v, t)) = match loaded {
         Some(shape) => (file.to_string(), shape),
         None => {
-            eprintln!("note: {file} not found (set BUOYANCY_MESHES); using the procedural torus knot");
-            ("procedural torus knot".to_string(), shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 128, 12).unwrap())
+            eprintln!(
+                "note: {file} not found (set BUOYANCY_MESHES); using the procedural torus knot"
+            );
+            (
+                "procedural torus knot".to_string(),
+                shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 128, 12).unwrap(),
+            )
         }
     };
     let mesh = Mesh::new(v, t).unwrap();
     let c = mesh.centroid();
     let k = radius / mesh.bounding_radius();
-    let v = (0..mesh.vertex_count()).map(|i| buoyancy_core::nalgebra::Point3::from((mesh.vertex(i) - c) * k)).collect();
+    let v = (0..mesh.vertex_count())
+        .map(|i| buoyancy_core::nalgebra::Point3::from((mesh.vertex(i) - c) * k))
+        .collect();
     (name, Mesh::new(v, mesh.triangles().to_vec()).unwrap())
 }
 
 /// A rapier trimesh collider of a mesh.
 pub fn trimesh(mesh: &Mesh<f64>) -> ColliderBuilder {
-    let v = (0..mesh.vertex_count()).map(|i| { let p = mesh.vertex(i); Vector::new(p.x as f32, p.y as f32, p.z as f32) }).collect();
+    let v = (0..mesh.vertex_count())
+        .map(|i| {
+            let p = mesh.vertex(i);
+            Vector::new(p.x as f32, p.y as f32, p.z as f32)
+        })
+        .collect();
     ColliderBuilder::trimesh(v, mesh.triangles().to_vec()).unwrap()
 }
