@@ -52,6 +52,7 @@ mod query;
 mod real;
 pub mod shape;
 mod surface_moments;
+mod validation;
 mod water;
 
 pub use damping::{Damping, DampingCoefficients};

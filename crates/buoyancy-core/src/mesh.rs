@@ -4,6 +4,7 @@ use nalgebra::{Point3, Vector3};
 
 use crate::hierarchy::Hierarchy;
 use crate::surface_moments::NodeMoments;
+use crate::validation;
 use crate::{Error, Real};
 
 /// A closed, consistently oriented triangle mesh, validated and prepared for buoyancy queries.
@@ -95,36 +96,7 @@ impl<T: Real> Mesh<T> {
     /// [`Error::ZeroVolume`], in that order of checking.
     pub fn new(vertices: Vec<Point3<T>>, triangles: Vec<[u32; 3]>) -> Result<Self, Error> {
         let mut triangles = triangles;
-        if triangles.is_empty() {
-            return Err(Error::EmptyMesh);
-        }
-        if u32::try_from(vertices.len()).is_err() {
-            return Err(Error::TooManyVertices {
-                count: vertices.len(),
-            });
-        }
-        if let Some(vertex) = vertices
-            .iter()
-            .position(|p| !p.iter().all(|c| c.is_finite()))
-        {
-            return Err(Error::NonFiniteVertex { vertex });
-        }
-        for (triangle, t) in triangles.iter().enumerate() {
-            if let Some(&index) = t.iter().find(|&&i| i as usize >= vertices.len()) {
-                return Err(Error::IndexOutOfRange {
-                    triangle,
-                    index,
-                    vertex_count: vertices.len(),
-                });
-            }
-            if t[0] == t[1] || t[1] == t[2] || t[2] == t[0] {
-                return Err(Error::RepeatedIndex {
-                    triangle,
-                    indices: *t,
-                });
-            }
-        }
-        check_closed_manifold(&triangles)?;
+        validation::validate(&vertices, &triangles)?;
 
         // Everything below in f64, relative to the middle of the bounding box, so that f32
         // meshes and meshes far from their origin keep their digits.
@@ -302,55 +274,6 @@ fn volume_moments(
         moment += (a + b + c) * (v / 4.0);
     }
     (volume, moment, scale)
-}
-
-/// Checks that every edge is shared by exactly two triangles traversing it in opposite
-/// directions. Runs in O(n log n) with one sort, no hashing (no_std).
-fn check_closed_manifold(triangles: &[[u32; 3]]) -> Result<(), Error> {
-    // (smaller vertex, larger vertex, triangle, whether the triangle goes smaller -> larger)
-    let mut edges: Vec<(u32, u32, u32, bool)> = Vec::with_capacity(triangles.len() * 3);
-    for (i, t) in triangles.iter().enumerate() {
-        for k in 0..3 {
-            let (a, b) = (t[k], t[(k + 1) % 3]);
-            edges.push((a.min(b), a.max(b), i as u32, a < b));
-        }
-    }
-    edges.sort_unstable();
-    let mut start = 0;
-    while start < edges.len() {
-        let (lo, hi, first, forward) = edges[start];
-        let mut end = start + 1;
-        while end < edges.len() && edges[end].0 == lo && edges[end].1 == hi {
-            end += 1;
-        }
-        let edge = [lo, hi];
-        match end - start {
-            1 => {
-                return Err(Error::OpenEdge {
-                    edge,
-                    triangle: first as usize,
-                });
-            }
-            2 => {
-                let (_, _, second, second_forward) = edges[start + 1];
-                if forward == second_forward {
-                    return Err(Error::InconsistentOrientation {
-                        edge: if forward { [lo, hi] } else { [hi, lo] },
-                        triangles: [first as usize, second as usize],
-                    });
-                }
-            }
-            n => {
-                return Err(Error::NonManifoldEdge {
-                    edge,
-                    triangle_count: n,
-                    triangles: [first as usize, edges[start + 1].2 as usize],
-                });
-            }
-        }
-        start = end;
-    }
-    Ok(())
 }
 
 #[cfg(test)]
