@@ -151,8 +151,8 @@ fn missing_or_unknown_files_are_errors() {
         Err(Error::Io { .. })
     ));
     assert!(matches!(
-        buoyancy::io::load::<f64>("mesh.ply"),
-        Err(Error::Io { .. })
+        buoyancy::io::load::<f64>("mesh.xyz"),
+        Err(Error::UnknownFormat { .. })
     ));
 }
 

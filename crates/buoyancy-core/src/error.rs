@@ -95,6 +95,12 @@ pub enum Error {
         /// What is wrong with it.
         reason: &'static str,
     },
+    /// A transform given to [`Mesh::transformed`](crate::Mesh::transformed) or
+    /// [`Mesh::scaled`](crate::Mesh::scaled) is not a finite, invertible affine map.
+    InvalidTransform {
+        /// What is wrong with it.
+        reason: &'static str,
+    },
     /// A linear or angular velocity has a NaN or infinite component.
     InvalidVelocity,
     /// The result overflowed: the pose or the water parameters are too large for the scalar type.
@@ -109,12 +115,20 @@ pub enum Error {
         /// The name given.
         name: String,
     },
-    /// A mesh file could not be read.
+    /// A mesh file could not be read (feature `std`).
+    #[cfg(feature = "std")]
     Io {
         /// The file's path.
         path: String,
+        /// What the operating system reported, e.g. [`NotFound`](std::io::ErrorKind::NotFound).
+        kind: std::io::ErrorKind,
         /// The operating system's message.
         message: String,
+    },
+    /// A mesh file whose extension names no format [`io::load`](crate::io::load) reads.
+    UnknownFormat {
+        /// The file's path.
+        path: String,
     },
     /// A mesh file could not be parsed.
     Parse {
@@ -181,6 +195,7 @@ impl fmt::Display for Error {
             Error::InvalidShape { parameter, reason } => {
                 write!(f, "invalid shape parameter {parameter}: {reason}")
             }
+            Error::InvalidTransform { reason } => write!(f, "invalid transform: {reason}"),
             Error::InvalidVelocity => {
                 write!(f, "invalid velocity: a NaN or infinite component")
             }
@@ -196,7 +211,12 @@ impl fmt::Display for Error {
                 f,
                 "unknown traversal {name:?}; valid traversals are auto, scan, hierarchy"
             ),
-            Error::Io { path, message } => write!(f, "cannot read {path}: {message}"),
+            #[cfg(feature = "std")]
+            Error::Io { path, message, .. } => write!(f, "cannot read {path}: {message}"),
+            Error::UnknownFormat { path } => write!(
+                f,
+                "cannot read {path}: unknown format, expected a .obj or .stl file"
+            ),
             Error::Parse { line, message } => {
                 if *line == 0 {
                     write!(f, "cannot parse the mesh: {message}")

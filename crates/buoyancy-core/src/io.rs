@@ -188,6 +188,7 @@ pub fn load<T: Real>(path: impl AsRef<std::path::Path>) -> Result<Shape<T>, Erro
     let path = path.as_ref();
     let io_error = |e: std::io::Error| Error::Io {
         path: path.display().to_string(),
+        kind: e.kind(),
         message: e.to_string(),
     };
     let extension = path
@@ -200,9 +201,8 @@ pub fn load<T: Real>(path: impl AsRef<std::path::Path>) -> Result<Shape<T>, Erro
             parse_obj(&text)
         }
         Some("stl") => parse_stl(&std::fs::read(path).map_err(io_error)?),
-        _ => Err(Error::Io {
+        _ => Err(Error::UnknownFormat {
             path: path.display().to_string(),
-            message: "unknown format: expected a .obj or .stl file".into(),
         }),
     }
 }

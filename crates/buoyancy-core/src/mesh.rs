@@ -1,6 +1,6 @@
 use alloc::vec::Vec;
 
-use nalgebra::{Point3, Vector3};
+use nalgebra::{Matrix4, Point3, Vector3};
 
 use crate::hierarchy::Hierarchy;
 use crate::surface_moments::NodeMoments;
@@ -201,6 +201,66 @@ impl<T: Real> Mesh<T> {
         })
     }
 
+    /// This mesh with every vertex mapped by the affine `matrix` (homogeneous, mesh frame):
+    /// `x' = A x + b` for `matrix = [[A, b], [0, 1]]`. A mirroring map (`det A < 0`) keeps the
+    /// triangles facing outward; the result is validated and prepared like any new mesh.
+    ///
+    /// ```
+    /// use buoyancy_core::{Mesh, shape};
+    /// use nalgebra::{Matrix4, Vector3};
+    ///
+    /// let (v, t) = shape::cube::<f64>(1)?;
+    /// let cube = Mesh::new(v, t)?;
+    /// let slab = cube.scaled(&Vector3::new(2.0, 0.5, 1.0))?;
+    /// assert!((slab.volume() - 1.0).abs() < 1e-12);
+    /// let moved = cube.transformed(&Matrix4::new_translation(&Vector3::new(0.0, 3.0, 0.0)))?;
+    /// assert!((moved.centroid().y - 3.0).abs() < 1e-12);
+    /// # Ok::<(), buoyancy_core::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::InvalidTransform`] if `matrix` has a NaN or infinite entry or its last row is
+    /// not `[0, 0, 0, 1]`; [`Error::ZeroVolume`] if it is singular (it flattens the mesh).
+    pub fn transformed(&self, matrix: &Matrix4<T>) -> Result<Self, Error> {
+        if !matrix.iter().all(|x| x.is_finite()) {
+            return Err(Error::InvalidTransform {
+                reason: "the matrix has a NaN or infinite entry",
+            });
+        }
+        let (zero, one) = (T::zero(), T::one());
+        if matrix.row(3).iter().ne([zero, zero, zero, one].iter()) {
+            return Err(Error::InvalidTransform {
+                reason: "the last row of an affine matrix must be [0, 0, 0, 1]",
+            });
+        }
+        let vertices = (0..self.vertex_count())
+            .map(|i| matrix.transform_point(&self.vertex(i)))
+            .collect();
+        Mesh::new(vertices, self.triangles.clone())
+    }
+
+    /// This mesh scaled by `factors` along the axes of the mesh frame, about its origin; see
+    /// [`Mesh::transformed`]. A negative factor mirrors the mesh.
+    ///
+    /// # Errors
+    /// [`Error::InvalidTransform`] if a factor is zero, NaN or infinite.
+    pub fn scaled(&self, factors: &Vector3<T>) -> Result<Self, Error> {
+        if !factors.iter().all(|f| f.is_finite() && *f != T::zero()) {
+            return Err(Error::InvalidTransform {
+                reason: "every scale factor must be finite and non-zero",
+            });
+        }
+        self.transformed(&Matrix4::new_nonuniform_scaling(factors))
+    }
+
+    /// This mesh moved by `offset` (mesh frame, m); see [`Mesh::transformed`].
+    ///
+    /// # Errors
+    /// [`Error::InvalidTransform`] if `offset` has a NaN or infinite component.
+    pub fn translated(&self, offset: &Vector3<T>) -> Result<Self, Error> {
+        self.transformed(&Matrix4::new_translation(offset))
+    }
+
     /// Enclosed volume in m³ (positive).
     pub fn volume(&self) -> T {
         self.volume
@@ -331,6 +391,30 @@ mod tests {
                 |t: &[u32; 3]| (0..3).all(|j| (v[t[j] as usize] - corners[j]).norm() < 1e-15);
             assert!(t.iter().any(same), "{leaf:?}");
         }
+    }
+
+    #[test]
+    fn transformed_copies_move_the_mesh_and_keep_it_outward() {
+        let (v, t) = tetrahedron();
+        let m = Mesh::new(v, t).unwrap();
+        let mirrored = m.scaled(&Vector3::new(-2.0, 1.0, 1.0)).unwrap();
+        assert!((mirrored.volume() - 2.0 / 6.0).abs() < 1e-15);
+        assert!((mirrored.centroid() - Point3::new(-0.5, 0.25, 0.25)).norm() < 1e-15);
+        let moved = m.translated(&Vector3::new(1.0, 2.0, 3.0)).unwrap();
+        assert!((moved.centroid() - Point3::new(1.25, 2.25, 3.25)).norm() < 1e-15);
+        assert_eq!(moved.triangles(), m.triangles());
+        for bad in [0.0, f64::NAN, f64::INFINITY] {
+            let e = m.scaled(&Vector3::new(1.0, bad, 1.0)).unwrap_err();
+            assert!(matches!(e, Error::InvalidTransform { .. }), "{e}");
+        }
+        let mut projective = Matrix4::identity();
+        projective[(3, 0)] = 0.5;
+        let e = m.transformed(&projective).unwrap_err();
+        assert!(matches!(e, Error::InvalidTransform { .. }), "{e}");
+        let mut flat = Matrix4::identity();
+        flat[(1, 1)] = 0.0;
+        let e = m.transformed(&flat).unwrap_err();
+        assert!(matches!(e, Error::ZeroVolume { .. }), "{e}");
     }
 
     #[test]

@@ -85,7 +85,8 @@ impl fmt::Display for Method {
 impl FromStr for Method {
     type Err = Error;
 
-    /// Parses a name of [`Method::name`] (case-insensitive, `-` accepted for `_`).
+    /// Parses a name of [`Method::name`], ignoring case and the separators between words:
+    /// `exact_surface`, `exact-surface` and `ExactSurface` all name [`Method::ExactSurface`].
     fn from_str(s: &str) -> Result<Self, Error> {
         Method::ALL
             .into_iter()
@@ -94,11 +95,39 @@ impl FromStr for Method {
     }
 }
 
-/// Whether `given` spells the snake-case `name`, ignoring case and accepting `-` for `_`.
+/// Whether `given` spells the snake-case `name` in any common way: ignoring case, with `_`,
+/// `-` or nothing between the words (`exact_surface`, `exact-surface`, `ExactSurface`).
 pub(crate) fn names_match(name: &str, given: &str) -> bool {
-    name.len() == given.len()
-        && name
-            .bytes()
-            .zip(given.bytes())
-            .all(|(a, b)| a == b.to_ascii_lowercase() || (a == b'_' && b == b'-'))
+    let mut expected = name.bytes().filter(|&b| b != b'_');
+    let mut given = given
+        .bytes()
+        .filter(|&b| b != b'_' && b != b'-')
+        .map(|b| b.to_ascii_lowercase());
+    loop {
+        match (expected.next(), given.next()) {
+            (None, None) => return true,
+            (Some(a), Some(b)) if a == b => {}
+            _ => return false,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_spelling_of_a_name_parses() {
+        for method in Method::ALL {
+            let debug = alloc::format!("{method:?}");
+            for spelling in [method.name(), &debug, &method.name().replace('_', "-")] {
+                assert_eq!(spelling.parse::<Method>(), Ok(method), "{spelling}");
+                let upper = spelling.to_ascii_uppercase();
+                assert_eq!(upper.parse::<Method>(), Ok(method), "{upper}");
+            }
+        }
+        for wrong in ["", "exac", "exactsurfaces", "exact surface", "fast surface"] {
+            assert!(wrong.parse::<Method>().is_err(), "{wrong}");
+        }
+    }
 }

@@ -60,7 +60,7 @@ pub(crate) fn to_py(e: Error, argument: Option<&str>) -> PyErr {
         | Error::InconsistentOrientation { .. }
         | Error::ZeroVolume { .. }
         | Error::Parse { .. } => MeshError::new_err(message),
-        Error::Io { .. } => PyOSError::new_err(message),
+        Error::Io { .. } | Error::UnknownFormat { .. } => PyOSError::new_err(message),
         _ => PyValueError::new_err(message),
     }
 }
