@@ -47,9 +47,10 @@
 
 use nalgebra::{Point3, Vector3};
 
+use crate::clip::clip_below;
+use crate::frame::Frame;
 use crate::hierarchy::Visit;
-use crate::integrals::clip_below;
-use crate::query::Frame;
+use crate::mesh::TriangleNormal;
 use crate::{Error, Mesh, Pose, Real, Water};
 
 /// The coefficients of the damping model (see the [module documentation](self)), SI units.
@@ -254,20 +255,20 @@ struct Drag<T: Real> {
     force: Vector3<T>,
     torque: Vector3<T>,
     /// Twice the wetted area.
-    area2: T,
+    double_area: T,
 }
 
 impl<T: Real> Drag<T> {
     /// Adds the wetted triangle `p` (corners relative to the centroid) of outward unit normal
-    /// `normal` and twice the area `norm2`: its area, and the drag on the part of it facing the
+    /// `normal` and twice the area `double_area`: its area, and the drag on the part of it facing the
     /// flow. A triangle of zero area adds nothing.
     #[inline(always)]
-    fn wetted(&mut self, p: [Vector3<T>; 3], normal: &Vector3<T>, norm2: T) {
+    fn wetted(&mut self, p: [Vector3<T>; 3], normal: &Vector3<T>, double_area: T) {
         let zero = T::zero();
-        if norm2 <= zero {
+        if double_area <= zero {
             return;
         }
-        self.area2 += norm2;
+        self.double_area += double_area;
         // u_n(p) = n̂·(v + ω × p) = n̂·v + (n̂ × ω)·p.
         let (base, slope) = (normal.dot(&self.velocity), normal.cross(&self.omega));
         let un = [
@@ -280,7 +281,7 @@ impl<T: Real> Drag<T> {
         }
         let half = T::from_f64_lossy(0.5);
         if un[0] >= zero && un[1] >= zero && un[2] >= zero {
-            self.facing(p, un, normal, norm2 * half);
+            self.facing(p, un, normal, double_area * half);
         } else {
             // Keep the part where u_n > 0: "under" the level set −u_n = 0.
             clip_below(p, [-un[0], -un[1], -un[2]], |q, minus_u| {
@@ -366,7 +367,7 @@ impl<T: Real> Mesh<T> {
             quadratic: half * water.density() * coefficients.drag_coefficient,
             force: Vector3::zeros(),
             torque: Vector3::zeros(),
-            area2: zero,
+            double_area: zero,
         };
         // The hierarchy skips the dry nodes and hands over the submerged ones whole, so only the
         // triangles near the waterline are classified; the drag itself is not linear in the
@@ -374,13 +375,13 @@ impl<T: Real> Mesh<T> {
         // is still integrated.
         self.hierarchy
             .walk(&frame.normal_local, frame.height, |visit| match visit {
-                Visit::Submerged(index, _) => {
-                    for i in self.hierarchy.range(index) {
-                        let (normal, area2) = &self.normals[i];
-                        drag.wetted(self.corners(i), normal, *area2);
+                Visit::SubmergedNode { node, .. } => {
+                    for i in self.hierarchy.range(node) {
+                        let normal = &self.normals[i];
+                        drag.wetted(self.corners(i), &normal.unit, normal.double_area);
                     }
                 }
-                Visit::Triangles(triangles) => {
+                Visit::CrossedLeaf { triangles } => {
                     for i in triangles {
                         let v = self.corners(i);
                         let h = frame.heights(&v);
@@ -388,9 +389,12 @@ impl<T: Real> Mesh<T> {
                         if !(h[0] < zero || h[1] < zero || h[2] < zero) {
                             continue;
                         }
-                        let (normal, area2) = &self.normals[i];
+                        let TriangleNormal {
+                            unit: normal,
+                            double_area,
+                        } = &self.normals[i];
                         if h[0] <= zero && h[1] <= zero && h[2] <= zero {
-                            drag.wetted(v, normal, *area2);
+                            drag.wetted(v, normal, *double_area);
                         } else {
                             // The pieces lie in the triangle's plane: their area is along its normal.
                             clip_below(v, h, |p, _| {
@@ -405,7 +409,7 @@ impl<T: Real> Mesh<T> {
                 }
             });
 
-        let wetted_area = drag.area2 * half;
+        let wetted_area = drag.double_area * half;
         let wetted_fraction = if self.surface_area > zero {
             (wetted_area / self.surface_area).min(T::one())
         } else {

@@ -1,6 +1,8 @@
 use alloc::string::String;
 use core::fmt;
 
+use crate::MeshDefects;
+
 /// Everything that can go wrong in this crate: a mesh that is not a closed, consistently
 /// oriented 2-manifold, a water description that is not physical, a pose that is not finite, or
 /// a mesh file that cannot be read.
@@ -17,56 +19,18 @@ pub enum Error {
         /// Number of vertices given.
         count: usize,
     },
-    /// A vertex coordinate is NaN or infinite.
-    NonFiniteVertex {
-        /// Index of the vertex.
-        vertex: usize,
-    },
-    /// A triangle refers to a vertex that does not exist.
-    IndexOutOfRange {
-        /// Index of the triangle.
-        triangle: usize,
-        /// The offending vertex index.
-        index: u32,
-        /// Number of vertices in the mesh.
-        vertex_count: usize,
-    },
-    /// A triangle uses the same vertex twice, e.g. `[4, 4, 9]`.
-    RepeatedIndex {
-        /// Index of the triangle.
-        triangle: usize,
-        /// Its three vertex indices.
-        indices: [u32; 3],
-    },
-    /// An edge belongs to one triangle only: the mesh has a hole and encloses no volume.
-    OpenEdge {
-        /// The edge's two vertex indices, smaller first.
-        edge: [u32; 2],
-        /// The only triangle that has it.
-        triangle: usize,
-    },
-    /// An edge is shared by more than two triangles.
-    NonManifoldEdge {
-        /// The edge's two vertex indices, smaller first.
-        edge: [u32; 2],
-        /// How many triangles share it.
-        triangle_count: usize,
-        /// Two of those triangles.
-        triangles: [usize; 2],
-    },
-    /// Two neighbouring triangles traverse their shared edge in the same direction, so one of
-    /// them faces the other way.
-    InconsistentOrientation {
-        /// The shared edge's two vertex indices, in the direction both triangles use.
-        edge: [u32; 2],
-        /// The two triangles.
-        triangles: [usize; 2],
-    },
-    /// The mesh is closed but encloses no volume (it is flat, or its parts cancel out).
+    /// The mesh is not a closed, consistently oriented 2-manifold with finite vertices: every
+    /// problem found, counted by kind, with the first few culprits of each and what the mesh
+    /// shows of the cause (see [`MeshDefects`]).
+    InvalidMesh(MeshDefects),
+    /// The mesh is closed but encloses no volume: `|volume| ≤ 1e-12·scale` (it is flat, or
+    /// parts wound inward cancel parts wound outward), or the volume overflowed.
     ZeroVolume {
-        /// The signed volume found.
+        /// The signed volume found, m³ (mesh frame).
         volume: f64,
-        /// The volume scale of the mesh (sum of the absolute tetrahedron volumes), for comparison.
+        /// The volume scale of the mesh, m³: the sum of the absolute volumes of the tetrahedra
+        /// that each triangle spans with the middle of the bounding box. Zero when every
+        /// triangle lies in a plane through that point, as in a flat mesh.
         scale: f64,
     },
     /// A water parameter is out of its physical range.
@@ -148,43 +112,8 @@ impl fmt::Display for Error {
                 "the mesh has {count} vertices; at most {} can be indexed with u32",
                 u32::MAX
             ),
-            Error::NonFiniteVertex { vertex } => {
-                write!(f, "vertex {vertex} has a NaN or infinite coordinate")
-            }
-            Error::IndexOutOfRange {
-                triangle,
-                index,
-                vertex_count,
-            } => write!(
-                f,
-                "triangle {triangle} refers to vertex {index}, but the mesh has only {vertex_count} vertices"
-            ),
-            Error::RepeatedIndex { triangle, indices } => {
-                write!(f, "triangle {triangle} uses a vertex twice: {indices:?}")
-            }
-            Error::OpenEdge { edge, triangle } => write!(
-                f,
-                "the mesh is not closed: edge ({}, {}) of triangle {triangle} has no neighbour",
-                edge[0], edge[1]
-            ),
-            Error::NonManifoldEdge {
-                edge,
-                triangle_count,
-                triangles,
-            } => write!(
-                f,
-                "the mesh is not a manifold: edge ({}, {}) is shared by {triangle_count} triangles (e.g. {} and {})",
-                edge[0], edge[1], triangles[0], triangles[1]
-            ),
-            Error::InconsistentOrientation { edge, triangles } => write!(
-                f,
-                "triangles {} and {} are oriented inconsistently: both traverse edge {} -> {}; flip one of them",
-                triangles[0], triangles[1], edge[0], edge[1]
-            ),
-            Error::ZeroVolume { volume, scale } => write!(
-                f,
-                "the mesh encloses no volume (signed volume {volume:e} against a scale of {scale:e})"
-            ),
+            Error::InvalidMesh(defects) => write!(f, "{defects}"),
+            Error::ZeroVolume { volume, scale } => write_zero_volume(f, *volume, *scale),
             Error::InvalidWater { parameter, reason } => {
                 write!(f, "invalid water {parameter}: {reason}")
             }
@@ -215,7 +144,7 @@ impl fmt::Display for Error {
             Error::Io { path, message, .. } => write!(f, "cannot read {path}: {message}"),
             Error::UnknownFormat { path } => write!(
                 f,
-                "cannot read {path}: unknown format, expected a .obj or .stl file"
+                "cannot read {path}: unknown format, expected a .obj, .stl or .ply file"
             ),
             Error::Parse { line, message } => {
                 if *line == 0 {
@@ -229,3 +158,34 @@ impl fmt::Display for Error {
 }
 
 impl core::error::Error for Error {}
+
+/// The message of [`Error::ZeroVolume`]: what the numbers say about the mesh, and what to check.
+fn write_zero_volume(f: &mut fmt::Formatter<'_>, volume: f64, scale: f64) -> fmt::Result {
+    if !volume.is_finite() || !scale.is_finite() {
+        write!(
+            f,
+            "the mesh's volume overflowed (signed volume {volume} m³): its coordinates are too \
+             large for the computation; express them in larger units or move the mesh nearer \
+             the origin"
+        )
+    } else if scale == 0.0 {
+        f.write_str(
+            "the mesh encloses no volume: it is flat (every triangle lies in one plane); check \
+             that no coordinate was dropped or scaled to zero",
+        )
+    } else {
+        f.write_str("the mesh encloses no volume: its signed volume is ")?;
+        if volume == 0.0 {
+            f.write_str("0")?;
+        } else {
+            write!(f, "{volume:.3e}")?;
+        }
+        write!(
+            f,
+            " m³, against {scale:.3e} m³ for its triangles' tetrahedra taken one by one: it is \
+             flat, or parts of it wound inward cancel parts wound outward; check that no \
+             coordinate was dropped or scaled to zero, and that every part is wound the same \
+             way (counter-clockwise seen from outside)"
+        )
+    }
+}

@@ -1,22 +1,12 @@
-//! A bounding-volume hierarchy over a mesh's triangles whose nodes carry their triangles'
-//! summed volume elements, so that a query opens only the nodes the water plane crosses.
+//! A bounding-volume hierarchy over a mesh's triangles, so that a query opens only the nodes
+//! the water plane crosses.
 //!
 //! # What a node stores
-//! For the triangles `i` under a node, in the mesh frame relative to the mesh centroid `c`:
-//!
-//! * the axis-aligned box of their vertices, corners `lo` and `hi`, in `f32` rounded outward
-//!   (so the stored box holds the exact one whatever `T` is, in 24 bytes), with the triangle
-//!   count and a link: 32 bytes, two nodes to a cache line, all the walk reads;
-//! * beside the nodes, in [`Hierarchy::sums`], `Σ detᵢ` and `Σ detᵢ·(aᵢ + bᵢ + cᵢ)`,
-//!   `detᵢ = aᵢ·(bᵢ×cᵢ)`: six times the volume and twenty-four times the first moment about `c`
-//!   of the tetrahedra from `c` to the triangles, the sums the `Fast` method adds over the fully
-//!   submerged triangles.
-//!
-//! Sums are accumulated in `f64` at build time and taken about the centroid, so that a mesh far
-//! from its own origin does not lose digits.
-//!
-//! The surface methods' coefficients of the inner nodes live beside the nodes, in
-//! [`crate::surface_moments::NodeMoments`], indexed by node.
+//! For the triangles under a node, in the mesh frame relative to the mesh centroid, the
+//! axis-aligned box of their vertices, corners `lo` and `hi`, in `f32` rounded outward (so the
+//! stored box holds the exact one whatever `T` is, in 24 bytes), with the triangle count and a
+//! link: 32 bytes, two nodes to a cache line, all the walk reads. What a node entirely under
+//! water adds for each method lives beside the nodes, indexed by node (see `node_sums`).
 //!
 //! # Query
 //! With `n` the up normal and `h_c` the centroid's height (both in the mesh frame), the heights
@@ -36,8 +26,7 @@ use alloc::vec::Vec;
 use nalgebra::Vector3;
 
 use crate::Real;
-use crate::integrals::Sums;
-use crate::parallel::join;
+use crate::reduction::{Sums, join};
 
 /// Most triangles in a leaf: a node with more triangles is an inner node.
 const LEAF_SIZE: u32 = 8;
@@ -68,20 +57,11 @@ impl Node {
     }
 }
 
-/// The `Fast` method's sums over a node's triangles, about the centroid, mesh frame.
-#[derive(Debug, Clone)]
-pub(crate) struct NodeSums<T: Real> {
-    pub volume6: T,
-    pub moment24: Vector3<T>,
-}
-
 /// The hierarchy: nodes in depth-first order, root first. The triangles are numbered in leaf
 /// order (see [`Hierarchy::build`]), so a leaf's triangles are a range.
 #[derive(Debug, Clone)]
 pub(crate) struct Hierarchy<T: Real> {
     pub nodes: Vec<Node>,
-    /// Per node, its triangles' volume sums.
-    pub sums: Vec<NodeSums<T>>,
     /// `Σₖ max(|loₖ|, |hiₖ|)` of the root's box: bounds the size of the numbers in every node
     /// test and vertex height, for the round-off margin.
     magnitude: T,
@@ -89,23 +69,32 @@ pub(crate) struct Hierarchy<T: Real> {
 
 /// What the walk found: a node entirely under water, or a leaf's triangles to examine one by one.
 pub(crate) enum Visit {
-    /// The node at this index, entirely under water, and its number of triangles.
-    Submerged(usize, u32),
-    Triangles(core::ops::Range<usize>),
+    /// A node (inner or leaf) entirely under water, with every one of its triangles.
+    SubmergedNode {
+        /// The node's index.
+        node: usize,
+        /// Its number of triangles.
+        triangle_count: u32,
+    },
+    /// A leaf the surface may cross: its triangles, in leaf order, each to be classified.
+    CrossedLeaf {
+        /// The leaf's triangles.
+        triangles: core::ops::Range<usize>,
+    },
 }
 
 /// Where a node's box lies against the water plane, round-off margin included.
-enum Side {
+enum NodeClass {
     /// Every point below the surface.
-    Below,
+    Submerged,
     /// Every point above it.
-    Above,
+    Dry,
     /// The surface may cross the box.
-    Crossing,
+    Straddling,
 }
 
-/// One query's plane in the form the node test wants (see the module documentation).
-struct Query<T: Real> {
+/// One evaluation's water plane in the form the node test wants (see the module documentation).
+struct PlaneTest<T: Real> {
     normal: [T; 3],
     height: T,
     margin: T,
@@ -115,12 +104,12 @@ struct Query<T: Real> {
     far: [usize; 3],
 }
 
-impl<T: Real> Query<T> {
+impl<T: Real> PlaneTest<T> {
     fn new(hierarchy: &Hierarchy<T>, normal: &Vector3<T>, height: T) -> Self {
         let normal = [normal.x, normal.y, normal.z];
         let near: [usize; 3] =
             core::array::from_fn(|k| if normal[k] >= T::zero() { k } else { k + 3 });
-        Query {
+        PlaneTest {
             normal,
             height,
             margin: T::default_epsilon()
@@ -132,7 +121,7 @@ impl<T: Real> Query<T> {
     }
 
     #[inline(always)]
-    fn side(&self, node: &Node) -> Side {
+    fn classify(&self, node: &Node) -> NodeClass {
         let (n, b) = (&self.normal, &node.bounds);
         let at = |corner: &[usize; 3]| {
             n[0] * T::from_f32_exact(b[corner[0]])
@@ -141,11 +130,11 @@ impl<T: Real> Query<T> {
                 + self.height
         };
         if at(&self.far) + self.margin < T::zero() {
-            Side::Below
+            NodeClass::Submerged
         } else if at(&self.near) - self.margin > T::zero() {
-            Side::Above
+            NodeClass::Dry
         } else {
-            Side::Crossing
+            NodeClass::Straddling
         }
     }
 }
@@ -155,14 +144,9 @@ impl<T: Real> Hierarchy<T> {
     /// and returns it with the leaf order: the triangles (indices into `triangles`) listed leaf
     /// by leaf. The hierarchy numbers triangles by their position in that order.
     ///
-    /// `vertices` are the stored vertices (relative to the centroid); `volume6` and `moment24`
-    /// the per-triangle sums, in `f64`.
-    pub fn build(
-        vertices: &[Vector3<T>],
-        triangles: &[[u32; 3]],
-        volume6: &[f64],
-        moment24: &[Vector3<f64>],
-    ) -> (Self, Vec<u32>) {
+    /// `vertices` are the stored vertices (relative to the centroid). What the nodes carry for
+    /// the methods is built afterwards, in the leaf order (see `node_sums`).
+    pub fn build(vertices: &[Vector3<T>], triangles: &[[u32; 3]]) -> (Self, Vec<u32>) {
         let mut order: Vec<u32> = (0..triangles.len() as u32).collect();
         let centers: Vec<Vector3<f64>> = triangles
             .iter()
@@ -176,14 +160,11 @@ impl<T: Real> Hierarchy<T> {
         let capacity = 2 * triangles.len() / LEAF_SIZE as usize + 1;
         let mut hierarchy = Hierarchy {
             nodes: Vec::with_capacity(capacity),
-            sums: Vec::with_capacity(capacity),
             magnitude: T::zero(),
         };
         let builder = Builder {
             vertices,
             triangles,
-            volume6,
-            moment24,
             centers: &centers,
         };
         builder.node(&mut hierarchy, &mut order, 0);
@@ -212,13 +193,13 @@ impl<T: Real> Hierarchy<T> {
         parallel: bool,
         visit: &(impl Fn(&mut S, Visit) + Sync),
     ) -> S {
-        let query = Query::new(self, normal, height);
-        self.split(&query, 0, 0, parallel, visit)
+        let plane = PlaneTest::new(self, normal, height);
+        self.reduce_subtree(&plane, 0, 0, parallel, visit)
     }
 
-    fn split<S: Sums>(
+    fn reduce_subtree<S: Sums>(
         &self,
-        query: &Query<T>,
+        plane: &PlaneTest<T>,
         index: u32,
         depth: u32,
         parallel: bool,
@@ -227,21 +208,27 @@ impl<T: Real> Hierarchy<T> {
         let node = &self.nodes[index as usize];
         if depth == SPLIT_DEPTH || node.is_leaf() {
             let mut sums = S::zero();
-            self.walk_from(query, index, |v| visit(&mut sums, v));
+            self.walk_from(plane, index, |v| visit(&mut sums, v));
             return sums;
         }
-        match query.side(node) {
-            Side::Below => {
+        match plane.classify(node) {
+            NodeClass::Submerged => {
                 let mut sums = S::zero();
-                visit(&mut sums, Visit::Submerged(index as usize, node.count));
+                visit(
+                    &mut sums,
+                    Visit::SubmergedNode {
+                        node: index as usize,
+                        triangle_count: node.count,
+                    },
+                );
                 sums
             }
-            Side::Above => S::zero(),
-            Side::Crossing => {
+            NodeClass::Dry => S::zero(),
+            NodeClass::Straddling => {
                 let (left, right) = join(
                     parallel && node.count >= PARALLEL_TRIANGLES,
-                    || self.split(query, index + 1, depth + 1, parallel, visit),
-                    || self.split(query, node.link, depth + 1, parallel, visit),
+                    || self.reduce_subtree(plane, index + 1, depth + 1, parallel, visit),
+                    || self.reduce_subtree(plane, node.link, depth + 1, parallel, visit),
                 );
                 left.merge(right)
             }
@@ -252,12 +239,12 @@ impl<T: Real> Hierarchy<T> {
     /// one after the other (depth first, left before right).
     #[inline]
     pub fn walk(&self, normal: &Vector3<T>, height: T, visit: impl FnMut(Visit)) {
-        self.walk_from(&Query::new(self, normal, height), 0, visit);
+        self.walk_from(&PlaneTest::new(self, normal, height), 0, visit);
     }
 
     /// [`Hierarchy::walk`] of the subtree at `root`.
     #[inline]
-    fn walk_from(&self, query: &Query<T>, root: u32, mut visit: impl FnMut(Visit)) {
+    fn walk_from(&self, plane: &PlaneTest<T>, root: u32, mut visit: impl FnMut(Visit)) {
         let mut stack = [0u32; 64];
         stack[0] = root;
         let mut top = 1;
@@ -265,14 +252,19 @@ impl<T: Real> Hierarchy<T> {
             top -= 1;
             let index = stack[top];
             let node = &self.nodes[index as usize];
-            match query.side(node) {
-                Side::Below => visit(Visit::Submerged(index as usize, node.count)),
-                Side::Above => {}
-                Side::Crossing if node.is_leaf() => {
+            match plane.classify(node) {
+                NodeClass::Submerged => visit(Visit::SubmergedNode {
+                    node: index as usize,
+                    triangle_count: node.count,
+                }),
+                NodeClass::Dry => {}
+                NodeClass::Straddling if node.is_leaf() => {
                     let first = node.link as usize;
-                    visit(Visit::Triangles(first..first + node.count as usize));
+                    visit(Visit::CrossedLeaf {
+                        triangles: first..first + node.count as usize,
+                    });
                 }
-                Side::Crossing => {
+                NodeClass::Straddling => {
                     // Right child below the left one (the node after this), which goes first.
                     stack[top] = node.link;
                     stack[top + 1] = index + 1;
@@ -301,7 +293,7 @@ impl<T: Real> Hierarchy<T> {
 
     /// Bytes of memory the hierarchy uses.
     pub fn memory(&self) -> usize {
-        self.nodes.len() * (core::mem::size_of::<Node>() + core::mem::size_of::<NodeSums<T>>())
+        self.nodes.len() * core::mem::size_of::<Node>()
     }
 }
 
@@ -318,8 +310,6 @@ fn to_f32_outward(x: f64, down: bool) -> f32 {
 struct Builder<'a, T: Real> {
     vertices: &'a [Vector3<T>],
     triangles: &'a [[u32; 3]],
-    volume6: &'a [f64],
-    moment24: &'a [Vector3<f64>],
     centers: &'a [Vector3<f64>],
 }
 
@@ -328,15 +318,12 @@ impl<T: Real> Builder<'_, T> {
     fn node(&self, hierarchy: &mut Hierarchy<T>, order: &mut [u32], first: usize) {
         let mut lo = self.vertices[self.triangles[order[0] as usize][0] as usize].map(T::to_f64);
         let mut hi = lo;
-        let (mut volume6, mut moment24) = (0.0, Vector3::zeros());
         for &i in order.iter() {
             for &k in &self.triangles[i as usize] {
                 let v = self.vertices[k as usize].map(T::to_f64);
                 lo = lo.inf(&v);
                 hi = hi.sup(&v);
             }
-            volume6 += self.volume6[i as usize];
-            moment24 += self.moment24[i as usize];
         }
         let index = hierarchy.nodes.len();
         let bounds = [lo.x, lo.y, lo.z, hi.x, hi.y, hi.z];
@@ -344,10 +331,6 @@ impl<T: Real> Builder<'_, T> {
             bounds: core::array::from_fn(|k| to_f32_outward(bounds[k], k < 3)),
             count: order.len() as u32,
             link: first as u32,
-        });
-        hierarchy.sums.push(NodeSums {
-            volume6: T::from_f64_lossy(volume6),
-            moment24: moment24.map(T::from_f64_lossy),
         });
         if hierarchy.nodes[index].is_leaf() {
             return;

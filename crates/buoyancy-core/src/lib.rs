@@ -40,27 +40,35 @@ extern crate alloc;
 #[cfg(feature = "std")]
 extern crate std;
 
+mod buoyancy;
+mod clip;
 pub mod damping;
 mod error;
+mod frame;
 mod hierarchy;
-mod integrals;
 pub mod io;
 mod mesh;
 mod method;
-mod parallel;
+mod node_sums;
 mod query;
 mod real;
+mod reduction;
 pub mod shape;
+mod surface;
 mod surface_moments;
+mod traversal;
 mod validation;
+mod volume;
 mod water;
 
+pub use buoyancy::Buoyancy;
 pub use damping::{Damping, DampingCoefficients};
 pub use error::Error;
 pub use mesh::Mesh;
 pub use method::Method;
-pub use query::{Buoyancy, Traversal};
 pub use real::Real;
+pub use traversal::Traversal;
+pub use validation::{Culprit, Defect, DefectKind, MeshDefects};
 pub use water::Water;
 
 /// A rigid transform from mesh space to world space: `x_world = rotation · x_mesh + translation`.

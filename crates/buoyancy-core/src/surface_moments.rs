@@ -25,13 +25,10 @@
 //!
 //! Sums about the mesh centroid keep the digits of a mesh far from its own origin, as elsewhere.
 
-use alloc::vec::Vec;
-
 use nalgebra::{Matrix3, Vector3};
 
 use crate::Real;
-use crate::hierarchy::Hierarchy;
-use crate::integrals::SurfaceSums;
+use crate::surface::SurfaceSums;
 
 /// The pair `(j, l)` of each stored slice of `T`, in storage order.
 const PAIRS: [(usize, usize); 6] = [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)];
@@ -126,7 +123,8 @@ impl SurfaceMoments<f64> {
         }
     }
 
-    fn cast<T: Real>(&self) -> SurfaceMoments<T> {
+    /// The same coefficients in `T`.
+    pub fn cast<T: Real>(&self) -> SurfaceMoments<T> {
         SurfaceMoments {
             area2: self.area2.map(T::from_f64_lossy),
             area_position: self.area_position.map(T::from_f64_lossy),
@@ -135,78 +133,11 @@ impl SurfaceMoments<f64> {
     }
 }
 
-/// [`SurfaceMoments`] of the inner nodes of a [`Hierarchy`]. Leaves hold at most a few
-/// triangles, which a query integrates directly, so they store nothing: 4 bytes per node for the
-/// slot plus 30 numbers per inner node.
-#[derive(Debug, Clone)]
-pub(crate) struct NodeMoments<T: Real> {
-    /// Per node: its position in `moments`, or `u32::MAX` for a leaf.
-    slots: Vec<u32>,
-    moments: Vec<SurfaceMoments<T>>,
-}
-
-impl<T: Real> NodeMoments<T> {
-    /// Sums the coefficients of every inner node of `hierarchy`, bottom-up in `f64`.
-    /// `corners(i)` gives triangle `i`'s corners (in leaf order, relative to the centroid).
-    pub fn build(hierarchy: &Hierarchy<T>, corners: impl Fn(usize) -> [Vector3<T>; 3]) -> Self {
-        let mut slots = alloc::vec![u32::MAX; hierarchy.nodes.len()];
-        let mut sums = Vec::new();
-        if !hierarchy.nodes.is_empty() {
-            subtree(hierarchy, &corners, 0, &mut slots, &mut sums);
-        }
-        NodeMoments {
-            slots,
-            moments: sums.iter().map(SurfaceMoments::cast).collect(),
-        }
-    }
-
-    /// The coefficients of node `index`, `None` for a leaf.
-    #[inline]
-    pub fn get(&self, index: usize) -> Option<&SurfaceMoments<T>> {
-        self.moments.get(self.slots[index] as usize)
-    }
-
-    /// Bytes of memory used.
-    pub fn memory(&self) -> usize {
-        self.slots.len() * core::mem::size_of::<u32>()
-            + self.moments.len() * core::mem::size_of::<SurfaceMoments<T>>()
-    }
-}
-
-/// The sums of the subtree at `index`, recording those of its inner nodes.
-fn subtree<T: Real>(
-    hierarchy: &Hierarchy<T>,
-    corners: &impl Fn(usize) -> [Vector3<T>; 3],
-    index: usize,
-    slots: &mut [u32],
-    sums: &mut Vec<SurfaceMoments<f64>>,
-) -> SurfaceMoments<f64> {
-    match hierarchy.children(index) {
-        None => {
-            let mut total = SurfaceMoments::zero();
-            for i in hierarchy.range(index) {
-                total.add(&SurfaceMoments::triangle(
-                    corners(i).map(|v| v.map(T::to_f64)),
-                ));
-            }
-            total
-        }
-        Some((left, right)) => {
-            let slot = sums.len();
-            slots[index] = slot as u32;
-            sums.push(SurfaceMoments::zero());
-            let mut total = subtree(hierarchy, corners, left, slots, sums);
-            total.add(&subtree(hierarchy, corners, right, slots, sums));
-            sums[slot] = total;
-            total
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::integrals::Sums;
+    use crate::reduction::Sums;
+    use alloc::vec::Vec;
 
     fn triangles() -> Vec<[Vector3<f64>; 3]> {
         // Deterministic, unstructured triangles.
