@@ -1,0 +1,322 @@
+//! The surface methods, `FastSurface` and `ExactSurface`: the hydrostatic pressure integrated
+//! over the wetted triangles, in closed form per triangle.
+//!
+//! `FastSurface` integrates over the fully submerged triangles, `ExactSurface` over the exact
+//! wetted surface (the waterline triangles clipped). With the hierarchy, the inner nodes entirely
+//! under water add their stored coefficients (see `surface_moments`), and the cost follows the
+//! waterline.
+
+use nalgebra::Vector3;
+
+use crate::buoyancy::TriangleCounts;
+use crate::clip::{TriangleClass, WaterlineCut, classify, cut_at_waterline};
+use crate::frame::Frame;
+use crate::hierarchy::Visit;
+use crate::reduction::{Sums, reduce};
+use crate::surface_moments::SurfaceMoments;
+use crate::{Buoyancy, Mesh, Method, Real, Water};
+
+/// Running sums of the surface methods, moments about a reference point `o`.
+///
+/// With `A = (b−a)×(c−a)/2` the outward area vector and `h` linear over the triangle, the
+/// exact integrals over a triangle are (for linear f, g: `∫ f g dA = |A|/12·(Σ fᵢgᵢ + Σfᵢ·Σgᵢ)`)
+///
+/// * pressure force `∫ h n̂ dA = (Σhᵢ/3)·A`, in units of ρg;
+/// * pressure moment `∫ r × h n̂ dA = w × A / 12`, `w = Σ hᵢ rᵢ + Σhᵢ·Σrᵢ`;
+/// * `∫ h r (n·n̂) dA = (n·A)·w/12` and `∫ h² (n·n̂) dA = (n·A)·q/12`, `q = Σhᵢ² + (Σhᵢ)²`.
+///
+/// The last two give the first moment of the submerged volume from the wetted surface alone,
+/// with no cap on the water plane: the fields `f·h·n` (f linear, `∇f ⊥ n`) and `h²n/2` vanish
+/// on the plane and have divergence `f` and `h`; see [`SurfaceSums::add_triangle`].
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct SurfaceSums<T: Real> {
+    /// Σ (Σhᵢ)·2A = 6·∫ h dA (force, in units of ρg).
+    pub force6: Vector3<T>,
+    /// Σ w × 2A = 24·∫ r × h dA (moment about `o`, in units of ρg).
+    pub torque24: Vector3<T>,
+    /// Σ (n·2A)·(w − q n/2) = 24·(first moment of the submerged volume about `o`).
+    pub moment24: Vector3<T>,
+    /// Triangles found fully and partly under water.
+    pub counts: TriangleCounts,
+}
+
+impl<T: Real> Sums for SurfaceSums<T> {
+    #[inline]
+    fn zero() -> Self {
+        SurfaceSums {
+            force6: Vector3::zeros(),
+            torque24: Vector3::zeros(),
+            moment24: Vector3::zeros(),
+            counts: TriangleCounts::default(),
+        }
+    }
+    #[inline]
+    fn merge(self, o: Self) -> Self {
+        SurfaceSums {
+            force6: self.force6 + o.force6,
+            torque24: self.torque24 + o.torque24,
+            moment24: self.moment24 + o.moment24,
+            counts: self.counts + o.counts,
+        }
+    }
+}
+
+impl<T: Real> SurfaceSums<T> {
+    /// Adds the pressure integrals of triangle `r` (positions relative to `o`) whose vertices
+    /// have heights `h` above the plane of unit up normal `n`.
+    ///
+    /// The first moment uses `r = r⊥ + (n·r) n` with `n·r = h − h_o` (`h_o` the height of `o`):
+    /// `∫_V r dV = ∫_S h r⊥ (n·dA) + n ∫_S (h²/2 − h_o h)(n·dA)
+    ///          = ∫_S h r (n·dA) − (n/2) ∫_S h² (n·dA)`,
+    /// the `h_o` terms cancelling, so `o` may be anywhere.
+    #[inline(always)]
+    pub fn add_triangle(&mut self, n: &Vector3<T>, r: [Vector3<T>; 3], h: [T; 3]) {
+        let area2 = (r[1] - r[0]).cross(&(r[2] - r[0]));
+        let sum_h = h[0] + h[1] + h[2];
+        let w = r[0] * h[0] + r[1] * h[1] + r[2] * h[2] + (r[0] + r[1] + r[2]) * sum_h;
+        let q = h[0] * h[0] + h[1] * h[1] + h[2] * h[2] + sum_h * sum_h;
+        self.force6 += area2 * sum_h;
+        self.torque24 += w.cross(&area2);
+        self.moment24 += (w - n * (q * T::from_f64_lossy(0.5))) * n.dot(&area2);
+    }
+
+    /// Adds `sign` times [`add_triangle`](Self::add_triangle) of the corner `[a, ab, ca]` cut
+    /// off a triangle at the waterline, whose heights are `[h_a, 0, 0]`: then `Σh = h_a`,
+    /// `w = h_a (2a + ab + ca)` and `q = 2h_a²`.
+    #[inline(always)]
+    pub fn add_corner(&mut self, n: &Vector3<T>, [a, ab, ca]: [Vector3<T>; 3], h_a: T, sign: T) {
+        let area2 = (ab - a).cross(&(ca - a)) * sign;
+        let w = (a + a + ab + ca) * h_a;
+        self.force6 += area2 * h_a;
+        self.torque24 += w.cross(&area2);
+        self.moment24 += (w - n * (h_a * h_a)) * n.dot(&area2);
+    }
+}
+
+impl<T: Real> Mesh<T> {
+    /// `FastSurface` or `ExactSurface`, moments about the centroid.
+    pub(crate) fn surface(
+        &self,
+        frame: &Frame<T>,
+        water: &Water<T>,
+        method: Method,
+        hierarchy: bool,
+        parallel: bool,
+    ) -> Buoyancy<T> {
+        let exact = method == Method::ExactSurface;
+        let n = frame.normal_local;
+        // Positions relative to the centroid.
+        let triangle = |s: &mut SurfaceSums<T>, i: usize| {
+            let v = self.corners(i);
+            let h = frame.heights(&v);
+            match classify(&h) {
+                TriangleClass::Submerged => {
+                    s.add_triangle(&n, v, h);
+                    s.counts.full += 1;
+                }
+                TriangleClass::Cut => {
+                    s.counts.partial += 1;
+                    if exact {
+                        // The corner at the odd vertex, or the whole triangle minus it.
+                        let WaterlineCut {
+                            odd_is_below,
+                            a,
+                            ab,
+                            ca,
+                            heights,
+                            ..
+                        } = cut_at_waterline(v, h);
+                        if odd_is_below {
+                            s.add_corner(&n, [a, ab, ca], heights[0], T::one());
+                        } else {
+                            s.add_triangle(&n, v, h);
+                            s.add_corner(&n, [a, ab, ca], heights[0], -T::one());
+                        }
+                    }
+                }
+                TriangleClass::Dry => {}
+            }
+        };
+        let sums = if hierarchy {
+            self.surface_walk(frame, parallel, triangle)
+        } else {
+            reduce(self.triangles.len(), parallel, &triangle)
+        };
+        self.surface_result(frame, water, sums)
+    }
+
+    /// The surface sums over the hierarchy: the triangles of the leaves the surface crosses go
+    /// through `triangle`; the inner nodes entirely under water add their stored coefficients,
+    /// evaluated once at the end (see [`crate::surface_moments`]), and the leaves entirely under
+    /// water pass their few triangles through `triangle` too. In parallel as
+    /// [`Hierarchy::reduce`](crate::hierarchy::Hierarchy::reduce) says.
+    fn surface_walk(
+        &self,
+        frame: &Frame<T>,
+        parallel: bool,
+        triangle: impl Fn(&mut SurfaceSums<T>, usize) + Sync,
+    ) -> SurfaceSums<T> {
+        let n = &frame.normal_local;
+        let WalkSums {
+            mut triangles,
+            nodes,
+        } = self.hierarchy.reduce(
+            n,
+            frame.height,
+            parallel,
+            &|walk: &mut WalkSums<T>, visit| {
+                let range = match visit {
+                    Visit::SubmergedNode {
+                        node,
+                        triangle_count,
+                    } => match self.node_sums.surface(node) {
+                        Some(moments) => {
+                            walk.nodes.add(moments);
+                            walk.triangles.counts.full += triangle_count as usize;
+                            return;
+                        }
+                        // A leaf: no stored coefficients.
+                        None => self.hierarchy.range(node),
+                    },
+                    Visit::CrossedLeaf { triangles } => triangles,
+                };
+                for i in range {
+                    triangle(&mut walk.triangles, i);
+                }
+            },
+        );
+        nodes.add_to(n, frame.height, &mut triangles);
+        triangles
+    }
+
+    /// Builds the result of a surface method from sums about the centroid (mesh frame).
+    fn surface_result(
+        &self,
+        frame: &Frame<T>,
+        water: &Water<T>,
+        sums: SurfaceSums<T>,
+    ) -> Buoyancy<T> {
+        let weight = water.specific_weight();
+        let force = sums.force6 / T::from_f64_lossy(6.0);
+        let volume = frame.normal_local.dot(&force);
+        let center_of_buoyancy = if volume.abs() > self.volume_tolerance() {
+            frame.center_of_mass
+                + frame.rotation * (sums.moment24 / (T::from_f64_lossy(24.0) * volume))
+        } else {
+            frame.surface_point()
+        };
+        self.finish(
+            frame,
+            sums.counts,
+            volume,
+            center_of_buoyancy,
+            frame.rotation * force * weight,
+            frame.rotation * sums.torque24 * (weight / T::from_f64_lossy(24.0)),
+        )
+    }
+}
+
+/// The surface walk's running sums: the triangles integrated one by one, and the coefficients
+/// of the nodes taken whole, evaluated once at the end.
+#[derive(Clone, Copy)]
+struct WalkSums<T: Real> {
+    triangles: SurfaceSums<T>,
+    nodes: SurfaceMoments<T>,
+}
+
+impl<T: Real> Sums for WalkSums<T> {
+    fn zero() -> Self {
+        WalkSums {
+            triangles: SurfaceSums::zero(),
+            nodes: SurfaceMoments::zero(),
+        }
+    }
+
+    fn merge(mut self, other: Self) -> Self {
+        self.nodes.add(&other.nodes);
+        WalkSums {
+            triangles: self.triangles.merge(other.triangles),
+            nodes: self.nodes,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn corner_kernel_is_the_triangle_kernel() {
+        let n = Vector3::new(0.2, 0.9, -0.3).normalize();
+        let (a, ab, ca) = (
+            Vector3::new(0.3, -1.2, 0.5),
+            Vector3::new(1.1, 0.2, -0.4),
+            Vector3::new(-0.7, 0.3, 0.9),
+        );
+        for sign in [1.0, -1.0] {
+            let (mut corner, mut triangle) =
+                (SurfaceSums::<f64>::zero(), SurfaceSums::<f64>::zero());
+            corner.add_corner(&n, [a, ab, ca], -0.8, sign);
+            let (b, c) = if sign > 0.0 { (ab, ca) } else { (ca, ab) };
+            triangle.add_triangle(&n, [a, b, c], [-0.8, 0.0, 0.0]);
+            assert!((corner.force6 - triangle.force6).norm() < 1e-14);
+            assert!((corner.torque24 - triangle.torque24).norm() < 1e-14);
+            assert!((corner.moment24 - triangle.moment24).norm() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn pressure_force_on_a_horizontal_triangle() {
+        // Unit right triangle facing down at depth 2: force (in units of ρg) = 2·(1/2) up.
+        let r = [
+            Vector3::new(0.0, -2.0, 0.0),
+            Vector3::new(1.0, -2.0, 0.0),
+            Vector3::new(0.0, -2.0, 1.0),
+        ];
+        let mut s = SurfaceSums::<f64>::zero();
+        s.add_triangle(&Vector3::y(), r, [-2.0; 3]);
+        assert!((s.force6 / 6.0 - Vector3::new(0.0, 1.0, 0.0)).norm() < 1e-15);
+        // Uniform pressure acts at the triangle's centroid (1/3, -2, 1/3).
+        let torque = s.torque24 / 24.0;
+        let expected = Vector3::new(1.0 / 3.0, -2.0, 1.0 / 3.0).cross(&(s.force6 / 6.0));
+        assert!((torque - expected).norm() < 1e-15);
+    }
+
+    #[test]
+    fn pressure_moment_of_a_vertical_triangle_is_exact() {
+        // Vertical triangle in the plane z = 0 facing +z, heights from -1 to 0.
+        // ∫ h x dA over it, computed by 2D quadrature, must match w/12·|A|.
+        let r = [
+            Vector3::new(0.0, -1.0, 0.0),
+            Vector3::new(2.0, -1.0, 0.0),
+            Vector3::new(0.0, 0.0, 0.0),
+        ];
+        let h = r.map(|v| v.y);
+        let mut s = SurfaceSums::<f64>::zero();
+        s.add_triangle(&Vector3::y(), r, h);
+        // Midpoint rule on a fine grid of the triangle x ∈ [0, 2(−y)], y ∈ [−1, 0].
+        let n = 2000;
+        let (mut fz, mut mx, mut my) = (0.0, 0.0, 0.0);
+        for i in 0..n {
+            let y = -1.0 + (i as f64 + 0.5) / n as f64;
+            let width = -2.0 * y;
+            for j in 0..n {
+                let x = width * (j as f64 + 0.5) / n as f64;
+                let da = width / n as f64 / n as f64;
+                fz += y * da; // force ∫ h n̂ dA, n̂ = +z
+                mx += y * y * da; // (r × h n̂)_x = y·h
+                my += -x * y * da; // (r × h n̂)_y = −x·h
+            }
+        }
+        let force = s.force6 / 6.0;
+        let torque = s.torque24 / 24.0;
+        assert!(
+            (force - Vector3::new(0.0, 0.0, fz)).norm() < 1e-6,
+            "{force:?} vs {fz}"
+        );
+        assert!(
+            (torque - Vector3::new(mx, my, 0.0)).norm() < 1e-6,
+            "{torque:?} vs {mx}, {my}"
+        );
+    }
+}

@@ -1,0 +1,326 @@
+//! The volume methods, `Fast`, `Improved` and `Exact`: the submerged volume and its first
+//! moment as sums of signed tetrahedra (divergence theorem).
+//!
+//! # Cost
+//! `Fast` sums precomputed tetrahedra (centroid to triangle) over the fully submerged
+//! triangles. `Exact` adds to the same sums the clipped waterline triangles and the cap: the
+//! part of the water plane inside the body, as a fan of tetrahedra from `o` over the waterline
+//! segments (and over mesh edges lying exactly in the plane, where a submerged triangle meets a
+//! dry one). So `Exact` costs `Fast` plus work on the waterline triangles only. `Improved` is
+//! `Exact` about `o` minus the clipped parts, i.e. the tetrahedra from `o` to the fully
+//! submerged triangles. With the hierarchy, whole nodes under water add their stored sums (see
+//! `hierarchy`), and the cost follows the waterline.
+
+use nalgebra::Vector3;
+
+use crate::buoyancy::TriangleCounts;
+use crate::clip::{TriangleClass, WaterlineCut, classify, cut_at_waterline};
+use crate::frame::Frame;
+use crate::hierarchy::Visit;
+use crate::reduction::{Sums, reduce};
+use crate::{Buoyancy, Mesh, Method, Real, Water};
+
+/// Running sums of the volume methods, about a reference point `o`.
+///
+/// For a triangle `(a, b, c)` (positions relative to `o`) the signed tetrahedron
+/// `(o, a, b, c)` has volume `V_i = det/6`, `det = a·(b×c)`, and first moment about `o`
+/// `V_i·(a+b+c)/4 = det·(a+b+c)/24`. Summed over a closed surface they give the enclosed volume
+/// and its first moment (divergence theorem).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct VolumeSums<T: Real> {
+    /// Σ det = 6·volume.
+    pub volume6: T,
+    /// Σ det·(a+b+c) = 24·first moment about `o`.
+    pub moment24: Vector3<T>,
+    /// Triangles found fully and partly under water.
+    pub counts: TriangleCounts,
+}
+
+impl<T: Real> Sums for VolumeSums<T> {
+    #[inline]
+    fn zero() -> Self {
+        VolumeSums {
+            volume6: T::zero(),
+            moment24: Vector3::zeros(),
+            counts: TriangleCounts::default(),
+        }
+    }
+    #[inline]
+    fn merge(self, o: Self) -> Self {
+        VolumeSums {
+            volume6: self.volume6 + o.volume6,
+            moment24: self.moment24 + o.moment24,
+            counts: self.counts + o.counts,
+        }
+    }
+}
+
+impl<T: Real> VolumeSums<T> {
+    /// Adds the tetrahedron `(o, a, b, c)`, positions relative to `o`.
+    #[inline(always)]
+    pub fn add_tetrahedron(&mut self, [a, b, c]: [Vector3<T>; 3]) {
+        let det = a.dot(&b.cross(&c));
+        self.volume6 += det;
+        self.moment24 += (a + b + c) * det;
+    }
+}
+
+/// `Exact`'s sums, and for `Improved` the clipped parts of the waterline triangles too.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ExactSums<T: Real> {
+    /// The submerged volume's sums about the centroid: fully submerged triangles, clipped
+    /// waterline triangles and the cap.
+    pub exact: VolumeSums<T>,
+    /// `Improved` only: the clipped parts of the waterline triangles, about `apex`.
+    pub clipped: VolumeSums<T>,
+}
+
+impl<T: Real> Sums for ExactSums<T> {
+    #[inline]
+    fn zero() -> Self {
+        ExactSums {
+            exact: VolumeSums::zero(),
+            clipped: VolumeSums::zero(),
+        }
+    }
+    #[inline]
+    fn merge(self, o: Self) -> Self {
+        ExactSums {
+            exact: self.exact.merge(o.exact),
+            clipped: self.clipped.merge(o.clipped),
+        }
+    }
+}
+
+/// Sums a volume method accumulates, with the member that takes the hierarchy's stored sums of
+/// the nodes entirely under water.
+trait WithSubmergedNodes<T: Real>: Sums {
+    fn submerged_mut(&mut self) -> &mut VolumeSums<T>;
+}
+
+impl<T: Real> WithSubmergedNodes<T> for VolumeSums<T> {
+    fn submerged_mut(&mut self) -> &mut VolumeSums<T> {
+        self
+    }
+}
+
+impl<T: Real> WithSubmergedNodes<T> for ExactSums<T> {
+    fn submerged_mut(&mut self) -> &mut VolumeSums<T> {
+        &mut self.exact
+    }
+}
+
+impl<T: Real> Mesh<T> {
+    /// `Fast`: the precomputed tetrahedra (centroid to triangle) of the fully submerged
+    /// triangles; moments about the centroid.
+    pub(crate) fn fast(
+        &self,
+        frame: &Frame<T>,
+        water: &Water<T>,
+        hierarchy: bool,
+        parallel: bool,
+    ) -> Buoyancy<T> {
+        let sums = self.volume_sums(frame, hierarchy, parallel, |s: &mut VolumeSums<T>, i| {
+            self.fast_triangle(frame, s, i)
+        });
+        self.volume_result(frame, water, sums, Vector3::zeros())
+    }
+
+    /// `Exact` or `Improved`.
+    ///
+    /// Sums about the centroid: the fully submerged triangles contribute the precomputed
+    /// tetrahedra of `Fast`, the waterline triangles their clipped part, and the cap closing the
+    /// submerged volume on the water plane a fan of tetrahedra from `apex`, the projection of the
+    /// centroid on the plane, over the waterline segments. Only the waterline costs more than
+    /// `Fast`.
+    pub(crate) fn exact_or_improved(
+        &self,
+        frame: &Frame<T>,
+        water: &Water<T>,
+        method: Method,
+        hierarchy: bool,
+        parallel: bool,
+    ) -> Buoyancy<T> {
+        let apex = frame.normal_local * -frame.height;
+        let improved = method == Method::Improved;
+        let ExactSums { exact, clipped } =
+            self.volume_sums(frame, hierarchy, parallel, |s: &mut ExactSums<T>, i| {
+                self.exact_triangle(frame, &apex, improved, s, i)
+            });
+        if !improved {
+            return self.volume_result(frame, water, exact, Vector3::zeros());
+        }
+        // Improved = tetrahedra from `apex` over the fully submerged triangles
+        // = the exact volume about `apex` minus the clipped parts about `apex`.
+        let volume6 = exact.volume6 - clipped.volume6;
+        // First moment about apex: Σ det·(a+b+c − 4·apex) = moment24 − 4·apex·volume6.
+        let moment24 =
+            exact.moment24 - apex * (T::from_f64_lossy(4.0) * exact.volume6) - clipped.moment24;
+        let sums = VolumeSums {
+            volume6,
+            moment24,
+            counts: exact.counts,
+        };
+        self.volume_result(frame, water, sums, apex)
+    }
+
+    /// Sums `triangle` over the triangles: over all of them (the scan, in parallel chunks when
+    /// `parallel`), or over the leaves of the hierarchy the surface crosses, adding the stored
+    /// sums of the nodes entirely under water.
+    fn volume_sums<S: WithSubmergedNodes<T>>(
+        &self,
+        frame: &Frame<T>,
+        hierarchy: bool,
+        parallel: bool,
+        triangle: impl Fn(&mut S, usize) + Sync,
+    ) -> S {
+        if !hierarchy {
+            return reduce(self.triangles.len(), parallel, &triangle);
+        }
+        self.hierarchy.reduce(
+            &frame.normal_local,
+            frame.height,
+            parallel,
+            &|sums: &mut S, visit| match visit {
+                Visit::SubmergedNode {
+                    node,
+                    triangle_count,
+                } => {
+                    let (s, node) = (sums.submerged_mut(), self.node_sums.volume(node));
+                    s.volume6 += node.volume6;
+                    s.moment24 += node.moment24;
+                    s.counts.full += triangle_count as usize;
+                }
+                Visit::CrossedLeaf { triangles } => {
+                    for i in triangles {
+                        triangle(sums, i);
+                    }
+                }
+            },
+        )
+    }
+
+    /// `Fast`'s contribution of triangle `i`: its precomputed tetrahedron to the centroid if it
+    /// is fully under water.
+    #[inline(always)]
+    fn fast_triangle(&self, frame: &Frame<T>, s: &mut VolumeSums<T>, i: usize) {
+        match classify(&frame.heights(&self.corners(i))) {
+            TriangleClass::Submerged => {
+                s.volume6 += self.tetra_volume6[i];
+                s.moment24 += self.tetra_moment24[i];
+                s.counts.full += 1;
+            }
+            TriangleClass::Cut => s.counts.partial += 1,
+            TriangleClass::Dry => {}
+        }
+    }
+
+    /// `Exact`'s contribution of triangle `i`, about the centroid, in `exact`; with `improved`,
+    /// its clipped part about `apex` in `clipped` too.
+    #[inline(always)]
+    fn exact_triangle(
+        &self,
+        frame: &Frame<T>,
+        apex: &Vector3<T>,
+        improved: bool,
+        ExactSums { exact, clipped }: &mut ExactSums<T>,
+        i: usize,
+    ) {
+        let v = self.corners(i);
+        let h = frame.heights(&v);
+        match classify(&h) {
+            TriangleClass::Submerged => {
+                exact.volume6 += self.tetra_volume6[i];
+                exact.moment24 += self.tetra_moment24[i];
+                exact.counts.full += 1;
+                // An edge lying in the surface bounds the cap too, unless the neighbour across
+                // it is submerged and cancels it.
+                let zero = T::zero();
+                if h[0] == zero || h[1] == zero || h[2] == zero {
+                    for k in 0..3 {
+                        let j = (k + 1) % 3;
+                        if h[k] == zero && h[j] == zero {
+                            exact.add_tetrahedron([*apex, v[j], v[k]]);
+                        }
+                    }
+                }
+            }
+            TriangleClass::Cut => {
+                exact.counts.partial += 1;
+                // The submerged part and its share of the cap from one small tetrahedron at the
+                // odd vertex: with `x = ab × ca`, the part (a, ab, ca) and the cap's triangle
+                // (apex, ca, ab) give `det = a·x − apex·x`. When `a` is the one vertex above,
+                // the submerged part is the whole triangle (its precomputed tetrahedron) minus
+                // (a, ab, ca), and the cap's triangle is reversed: the same terms, negated.
+                let WaterlineCut {
+                    odd_is_below,
+                    a,
+                    b,
+                    c,
+                    ab,
+                    ca,
+                    ..
+                } = cut_at_waterline(v, h);
+                let x = ab.cross(&ca);
+                let (part, cap) = (a.dot(&x), apex.dot(&x));
+                let rim = ab + ca;
+                let volume6 = part - cap;
+                let moment24 = (a + rim) * part - (apex + rim) * cap;
+                if odd_is_below {
+                    exact.volume6 += volume6;
+                    exact.moment24 += moment24;
+                } else {
+                    exact.volume6 += self.tetra_volume6[i] - volume6;
+                    exact.moment24 += self.tetra_moment24[i] - moment24;
+                }
+                if improved {
+                    // Improved leaves the submerged part out; remember it about `apex`:
+                    // (a, ab, ca), or the whole triangle minus it.
+                    let (a, b, c, ab, ca) = (a - apex, b - apex, c - apex, ab - apex, ca - apex);
+                    let part = a.dot(&ab.cross(&ca));
+                    let part_moment = (a + ab + ca) * part;
+                    if odd_is_below {
+                        clipped.volume6 += part;
+                        clipped.moment24 += part_moment;
+                    } else {
+                        let whole = a.dot(&b.cross(&c));
+                        clipped.volume6 += whole - part;
+                        clipped.moment24 += (a + b + c) * whole - part_moment;
+                    }
+                }
+            }
+            TriangleClass::Dry => {}
+        }
+    }
+
+    /// Builds the result of a volume method from sums about `origin` (mesh frame, relative to
+    /// the centroid).
+    ///
+    /// With `M` the first moment about `origin`, `C − w = R(origin + M/V)` and
+    /// `τ = (C − w) × ρgV n = ρg R(origin×n_l·V + M × n_l)`; `origin` is either 0 or along
+    /// `n_l`, so `τ = ρg R(M × n_l)`, with no division by V.
+    fn volume_result(
+        &self,
+        frame: &Frame<T>,
+        water: &Water<T>,
+        sums: VolumeSums<T>,
+        origin: Vector3<T>,
+    ) -> Buoyancy<T> {
+        let volume = sums.volume6 / T::from_f64_lossy(6.0);
+        let moment = sums.moment24 / T::from_f64_lossy(24.0);
+        let weight = water.specific_weight();
+        let center_of_buoyancy = if volume.abs() > self.volume_tolerance() {
+            frame.center_of_mass + frame.rotation * (origin + moment / volume)
+        } else {
+            frame.surface_point()
+        };
+        self.finish(
+            frame,
+            sums.counts,
+            volume,
+            center_of_buoyancy,
+            frame.normal * (weight * volume),
+            frame.rotation * moment.cross(&frame.normal_local) * weight,
+        )
+    }
+}
