@@ -1,11 +1,13 @@
 """Type stubs of the compiled module ``buoyancy._core`` (re-exported by ``buoyancy``)."""
 
 import os
-from typing import Final, Literal, Protocol, TypeAlias, final
+from typing import Final, Literal, Protocol, SupportsIndex, TypeAlias, final
 
 import numpy as np
 import numpy.typing as npt
 
+# The canonical names; any case, with "_", "-" or nothing between the words, is accepted too
+# ("ExactSurface", "exact-surface").
 _MethodName: TypeAlias = Literal["fast", "improved", "exact", "fast_surface", "exact_surface"]
 _TraversalName: TypeAlias = Literal["auto", "scan", "hierarchy"]
 _FloatArray: TypeAlias = npt.NDArray[np.float64]
@@ -37,10 +39,17 @@ class MeshError(ValueError):
     """A mesh that cannot be used; the message names the vertex, triangle or edge at fault."""
 
 class _HasVerticesAndFaces(Protocol):
+    """A ``trimesh.Trimesh``, or anything with ``vertices`` and ``faces`` arrays."""
+
     @property
     def vertices(self) -> npt.ArrayLike: ...
     @property
     def faces(self) -> npt.ArrayLike: ...
+
+class _HasToGeometry(Protocol):
+    """A ``trimesh.Scene``: its geometry concatenated in place by ``to_geometry()``."""
+
+    def to_geometry(self) -> _HasVerticesAndFaces: ...
 
 @final
 class Water:
@@ -52,7 +61,8 @@ class Water:
         gravity: float = 9.81,
         level: float = 0.0,
         normal: npt.ArrayLike | None = (0.0, 1.0, 0.0),
-    ) -> Water: ...
+    ) -> Water:
+        """``gravity`` is a magnitude, m/s²; its direction is ``-normal``."""
     @property
     def density(self) -> float: ...
     @property
@@ -72,6 +82,17 @@ class Water:
 class Buoyancy:
     """The buoyancy at one pose, world frame."""
 
+    def __new__(
+        cls,
+        volume: float,
+        center: npt.ArrayLike,
+        force: npt.ArrayLike,
+        torque: npt.ArrayLike,
+        about: npt.ArrayLike,
+        fully_submerged: int = 0,
+        partially_submerged: int = 0,
+        method: _MethodName | str = "exact",
+    ) -> Buoyancy: ...
     @property
     def volume(self) -> float: ...
     @property
@@ -92,6 +113,22 @@ class Buoyancy:
     def partially_submerged(self) -> int: ...
     @property
     def method(self) -> str: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(
+        self,
+    ) -> tuple[
+        type[Buoyancy],
+        tuple[
+            float,
+            tuple[float, float, float],
+            tuple[float, float, float],
+            tuple[float, float, float],
+            tuple[float, float, float],
+            int,
+            int,
+            str,
+        ],
+    ]: ...
 
 @final
 class BuoyancyBatch:
@@ -119,7 +156,7 @@ class BuoyancyBatch:
     @property
     def method(self) -> str: ...
     def __len__(self) -> int: ...
-    def __getitem__(self, index: int, /) -> Buoyancy: ...
+    def __getitem__(self, index: SupportsIndex, /) -> Buoyancy: ...
 
 @final
 class DampingCoefficients:
@@ -127,27 +164,27 @@ class DampingCoefficients:
 
     def __new__(
         cls,
-        linear: float = 1000.0,
+        linear_drag: float = 1000.0,
         drag_coefficient: float = 1.0,
-        angular_linear: float = 0.1,
-        angular_quadratic: float = 0.1,
+        angular_drag_linear: float = 0.1,
+        angular_drag_quadratic: float = 0.1,
         current: npt.ArrayLike | None = (0.0, 0.0, 0.0),
     ) -> DampingCoefficients: ...
     @classmethod
     def off(cls) -> DampingCoefficients:
         """No damping at all."""
     @property
-    def linear(self) -> float:
-        """Linear pressure-drag coefficient, Pa per m/s."""
+    def linear_drag(self) -> float:
+        """Linear pressure-drag coefficient ``c₁``, Pa per m/s."""
     @property
     def drag_coefficient(self) -> float:
         """Dimensionless quadratic drag coefficient ``C_D``."""
     @property
-    def angular_linear(self) -> float:
-        """Linear angular damping rate, 1/s."""
+    def angular_drag_linear(self) -> float:
+        """Linear angular damping rate ``a₁``, 1/s."""
     @property
-    def angular_quadratic(self) -> float:
-        """Dimensionless quadratic angular damping coefficient."""
+    def angular_drag_quadratic(self) -> float:
+        """Dimensionless quadratic angular damping coefficient ``a₂``."""
     @property
     def current(self) -> _FloatArray:
         """Velocity of the water, m/s, shape (3,)."""
@@ -199,7 +236,7 @@ class Mesh:
 
     def __new__(cls, vertices: npt.ArrayLike, faces: npt.ArrayLike) -> Mesh: ...
     @classmethod
-    def from_trimesh(cls, obj: _HasVerticesAndFaces) -> Mesh: ...
+    def from_trimesh(cls, obj: _HasVerticesAndFaces | _HasToGeometry) -> Mesh: ...
     @property
     def volume(self) -> float: ...
     @property
@@ -248,6 +285,14 @@ class Mesh:
         coefficients: DampingCoefficients | None = None,
         about: npt.ArrayLike | None = None,
     ) -> Damping: ...
+    def transformed(self, matrix: npt.ArrayLike) -> Mesh:
+        """A copy mapped by the affine 4×4 ``matrix`` (mesh frame)."""
+    def scaled(self, factor: float | npt.ArrayLike) -> Mesh:
+        """A copy scaled about the mesh frame's origin, by one factor or one per axis."""
+    def translated(self, offset: npt.ArrayLike) -> Mesh:
+        """A copy moved by ``offset``, m."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __hash__(self) -> int: ...
     def __reduce__(self) -> tuple[type[Mesh], tuple[_FloatArray, _IntArray]]: ...
 
 def load(path: str | os.PathLike[str]) -> Mesh: ...

@@ -43,10 +43,29 @@ def test_properties() -> None:
     assert mesh.faces.dtype == np.int64
     assert not mesh.was_reoriented
     assert mesh.bounding_radius == pytest.approx(np.linalg.norm(np.array([1, 0, 0]) - 0.25))
-    # Returned arrays are copies: changing them does not change the mesh.
-    c = mesh.centroid
-    c[:] = 7
-    np.testing.assert_allclose(mesh.centroid, 0.25)
+
+
+def test_array_attributes_are_read_only() -> None:
+    mesh = buoyancy.Mesh(TET_V, TET_F)
+    b = mesh.buoyancy((0, 0.3, 0))
+    arrays = {
+        "Mesh.vertices": mesh.vertices,
+        "Mesh.faces": mesh.faces,
+        "Mesh.centroid": mesh.centroid,
+        "Water.normal": buoyancy.Water().normal,
+        "Buoyancy.center": b.center,
+        "Buoyancy.force": b.force,
+        "Buoyancy.torque": b.torque,
+        "Buoyancy.about": b.about,
+    }
+    for name, array in arrays.items():
+        assert not array.flags.writeable, name
+        with pytest.raises(ValueError, match="read-only"):
+            array[0] = 7
+    # A copy is the array to change.
+    vertices = np.array(mesh.vertices)
+    vertices[0] = 7
+    np.testing.assert_array_equal(mesh.vertices, TET_V)
 
 
 def test_inward_winding_is_flipped() -> None:
@@ -103,6 +122,35 @@ def test_methods_constant() -> None:
         assert shapes.cube().buoyancy(method=m).method == m
 
 
+@pytest.mark.parametrize(
+    "spellings, name",
+    [
+        (("exact_surface", "ExactSurface", "exact-surface", "EXACT_SURFACE", "exactSurface"), "exact_surface"),
+        (("fast_surface", "FastSurface", "fast-surface"), "fast_surface"),
+        (("improved", "Improved", "IMPROVED"), "improved"),
+    ],
+)
+def test_method_names_in_any_spelling(spellings: tuple[str, ...], name: str) -> None:
+    knot = shapes.torus_knot()
+    expected = knot.buoyancy((0, 0.1, 0), method=name)
+    for spelling in spellings:
+        b = knot.buoyancy((0, 0.1, 0), method=spelling)
+        assert b == expected and b.method == name, spelling
+        batch = knot.buoyancy_batch([(0, 0.1, 0)], None, method=spelling)
+        assert batch.method == name and batch[0] == expected, spelling
+    with pytest.raises(ValueError, match="^method: unknown method"):
+        knot.buoyancy(method="exact surface")
+
+
+def test_traversal_names_in_any_spelling() -> None:
+    knot = shapes.torus_knot()
+    for traversal, spellings in (("scan", ("Scan", "SCAN")), ("hierarchy", ("Hierarchy", "HIERARCHY")), ("auto", ("Auto",))):
+        expected = knot.buoyancy((0, 0.1, 0), traversal=traversal)
+        for spelling in spellings:
+            assert knot.buoyancy((0, 0.1, 0), traversal=spelling) == expected, spelling
+            np.testing.assert_array_equal(knot.buoyancy_batch([(0, 0.1, 0)], None, traversal=spelling).force[0], expected.force)
+
+
 def obj_text(mesh: buoyancy.Mesh) -> str:
     lines = [f"v {float(x)!r} {float(y)!r} {float(z)!r}" for x, y, z in mesh.vertices]
     lines += [f"f {a + 1} {b + 1} {c + 1}" for a, b, c in mesh.faces]
@@ -155,26 +203,69 @@ def test_shared_meshes(shared_meshes: pathlib.Path) -> None:
 class FakeTrimesh:
     """What Mesh.from_trimesh needs from a trimesh.Trimesh: numpy vertices and faces."""
 
-    def __init__(self) -> None:
-        self.vertices = np.array(TET_V, dtype=np.float64)
+    def __init__(self, offset: float = 0.0) -> None:
+        self.vertices = np.array(TET_V, dtype=np.float64) + offset
         self.faces = np.array(TET_F, dtype=np.int64)
+
+
+class FakeScene:
+    """What Mesh.from_trimesh needs from a trimesh.Scene: ``to_geometry()``, its parts in place."""
+
+    def __init__(self, *parts: FakeTrimesh) -> None:
+        self.parts = parts
+
+    def to_geometry(self) -> FakeTrimesh:
+        whole = FakeTrimesh()
+        whole.vertices = np.concatenate([p.vertices for p in self.parts])
+        whole.faces = np.concatenate([p.faces + 4 * k for k, p in enumerate(self.parts)])
+        return whole
 
 
 def test_from_trimesh() -> None:
     mesh = buoyancy.Mesh.from_trimesh(FakeTrimesh())
     assert isinstance(mesh, buoyancy.Mesh)
     assert mesh.volume == pytest.approx(1 / 6)
-    try:
-        import trimesh
-    except ImportError:
-        return
+    assert mesh == buoyancy.Mesh(TET_V, TET_F)
+
+
+def test_from_trimesh_scene_concatenates_its_geometry() -> None:
+    two = buoyancy.Mesh.from_trimesh(FakeScene(FakeTrimesh(), FakeTrimesh(offset=5.0)))
+    assert (two.n_vertices, two.n_triangles) == (8, 8)
+    assert two.volume == pytest.approx(2 / 6)
+    np.testing.assert_allclose(two.centroid, 0.25 + 2.5)
+
+
+class PointCloudScene:
+    """A scene whose geometry has vertices but no faces (a trimesh.PointCloud)."""
+
+    def to_geometry(self) -> object:
+        class Points:
+            vertices = np.zeros((3, 3))
+
+        return Points()
+
+
+def test_from_trimesh_scene_without_faces_is_a_type_error() -> None:
+    with pytest.raises(TypeError, match=r"^obj: expected .*; the scene's geometry has no faces, got .*Points$"):
+        buoyancy.Mesh.from_trimesh(PointCloudScene())  # type: ignore[arg-type]
+
+
+def test_from_real_trimesh_and_scene() -> None:
+    trimesh = pytest.importorskip("trimesh", reason="trimesh is not installed; the stand-ins above test the same calls")
     box = buoyancy.Mesh.from_trimesh(trimesh.creation.box(extents=(1, 2, 3)))
     assert box.volume == pytest.approx(6.0)
+    moved = trimesh.creation.icosphere(subdivisions=2, radius=0.5)
+    moved.apply_translation((3.0, 0.0, 0.0))
+    scene = trimesh.Scene([trimesh.creation.box(extents=(1, 2, 3)), moved])
+    both = buoyancy.Mesh.from_trimesh(scene)
+    assert both.volume == pytest.approx(6.0 + moved.volume, rel=1e-12)
+    assert both.n_triangles == 12 + len(moved.faces)
 
 
 def test_pickle_round_trip(rng: np.random.Generator) -> None:
     for mesh in (shapes.torus_knot(), buoyancy.Mesh(TET_V, [(a, c, b) for a, b, c in TET_F])):
         copy = pickle.loads(pickle.dumps(mesh))
+        assert copy == mesh and hash(copy) == hash(mesh)
         assert copy.volume == mesh.volume and copy.was_reoriented == mesh.was_reoriented
         np.testing.assert_array_equal(copy.vertices, mesh.vertices)
         np.testing.assert_array_equal(copy.faces, mesh.faces)
@@ -189,6 +280,110 @@ def test_pickle_round_trip(rng: np.random.Generator) -> None:
         b = copy.buoyancy_batch(positions, rotations, water=water_copy)
         for field in ("volume", "center", "force", "torque"):
             np.testing.assert_array_equal(getattr(a, field), getattr(b, field))
+
+
+def test_mesh_equality_is_by_value() -> None:
+    mesh = buoyancy.Mesh(TET_V, TET_F)
+    same = buoyancy.Mesh(np.array(TET_V, dtype=np.float32), np.array(TET_F, dtype=np.uint16))
+    assert mesh == same and hash(mesh) == hash(same) and mesh is not same
+    assert len({mesh, same}) == 1
+    assert mesh != buoyancy.Mesh([(0, 0, 0), (2, 0, 0), (0, 1, 0), (0, 0, 1)], TET_F)  # another vertex
+    assert mesh != buoyancy.Mesh(TET_V, [(0, 1, 3), (0, 3, 2), (0, 2, 1), (1, 2, 3)])  # the faces in another order
+    assert mesh != buoyancy.Mesh(TET_V, [(a, c, b) for a, b, c in TET_F])  # wound inward as given
+    assert mesh != "a mesh"
+    # -0.0 equals 0.0, and hashes alike.
+    signed = buoyancy.Mesh([(-0.0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)], TET_F)
+    assert signed == mesh and hash(signed) == hash(mesh)
+
+
+def test_buoyancy_pickles_and_compares_by_value() -> None:
+    knot = shapes.torus_knot()
+    b = knot.buoyancy((0.1, 0.05, 0), (0, 0, 0.6, 0.8), method="improved", about=(1, 2, 3))
+    for protocol in (2, pickle.HIGHEST_PROTOCOL):
+        copy = pickle.loads(pickle.dumps(b, protocol=protocol))
+        assert copy == b and copy is not b
+        assert (copy.volume, copy.method, copy.fully_submerged, copy.partially_submerged) == (
+            b.volume,
+            "improved",
+            b.fully_submerged,
+            b.partially_submerged,
+        )
+        for field in ("center", "force", "torque", "about"):
+            np.testing.assert_array_equal(getattr(copy, field), getattr(b, field))
+    assert b != knot.buoyancy((0.1, 0.05, 0), (0, 0, 0.6, 0.8), method="improved")  # about differs
+    assert b != knot.buoyancy((0.1, 0.05, 0), (0, 0, 0.6, 0.8), method="exact", about=(1, 2, 3))
+    built = buoyancy.Buoyancy(b.volume, b.center, b.force, b.torque, b.about, b.fully_submerged, b.partially_submerged, "Improved")
+    assert built == b
+    assert buoyancy.Buoyancy(0.5, (0, 0, 0), (0, 1, 0), (0, 0, 0), (0, 0, 0)).method == "exact"
+    with pytest.raises(ValueError, match="^force: has a NaN"):
+        buoyancy.Buoyancy(0.5, (0, 0, 0), (0, np.nan, 0), (0, 0, 0), (0, 0, 0))
+
+
+def assert_same_mesh(a: buoyancy.Mesh, b: buoyancy.Mesh, atol: float = 0.0) -> None:
+    np.testing.assert_allclose(a.vertices, b.vertices, rtol=0, atol=atol)
+    np.testing.assert_array_equal(a.faces, b.faces)
+    assert a.volume == pytest.approx(b.volume, rel=1e-12)
+    np.testing.assert_allclose(a.centroid, b.centroid, rtol=0, atol=max(atol, 1e-12))
+
+
+def test_transformed_copies() -> None:
+    knot = shapes.torus_knot()
+    v, f = knot.vertices, knot.faces
+    # translated: every vertex moved, the volume kept, the centroid moved.
+    offset = np.array([0.5, -2.0, 3.0])
+    moved = knot.translated(offset)
+    assert_same_mesh(moved, buoyancy.Mesh(v + offset, f), atol=1e-12)
+    np.testing.assert_allclose(moved.centroid, knot.centroid + offset, atol=1e-12)
+    # scaled: one factor, or one per axis; the volume scales by their product.
+    assert knot.scaled(2).volume == pytest.approx(8 * knot.volume, rel=1e-12)
+    stretched = knot.scaled((1.0, 2.0, 0.5))
+    assert_same_mesh(stretched, buoyancy.Mesh(v * (1.0, 2.0, 0.5), f), atol=1e-12)
+    assert stretched.volume == pytest.approx(knot.volume, rel=1e-12)
+    # A mirror keeps the faces wound outward: the volume stays positive.
+    mirrored = knot.scaled((-1, 1, 1))
+    assert mirrored.volume == pytest.approx(knot.volume, rel=1e-12)
+    np.testing.assert_allclose(mirrored.centroid, knot.centroid * (-1, 1, 1), atol=1e-12)
+    # transformed: x' = A x + b.
+    a = np.array([[0.0, -1.0, 0.0], [2.0, 0.0, 0.0], [0.0, 0.0, 1.5]])
+    m = np.eye(4)
+    m[:3, :3], m[:3, 3] = a, (1.0, 2.0, 3.0)
+    mapped = knot.transformed(m)
+    assert_same_mesh(mapped, buoyancy.Mesh(v @ a.T + (1.0, 2.0, 3.0), f), atol=1e-12)
+    assert mapped.volume == pytest.approx(3 * knot.volume, rel=1e-12)
+    # The original is unchanged.
+    np.testing.assert_array_equal(knot.vertices, v)
+
+
+def test_transformed_copies_pickle_bit_for_bit() -> None:
+    knot = shapes.torus_knot()
+    m = np.eye(4)
+    m[:3, :3] = [[0.0, -1.1, 0.0], [0.9, 0.0, 0.0], [0.0, 0.0, 1.3]]
+    m[:3, 3] = (0.1, 0.2, 0.3)
+    for copy in (knot.transformed(m), knot.scaled((0.3, -0.7, 1.9)), knot.translated((1e-3, 7.0, -0.1))):
+        restored = pickle.loads(pickle.dumps(copy))
+        assert restored == copy
+        np.testing.assert_array_equal(restored.centroid, copy.centroid)
+        position = copy.centroid + (0.0, 0.05, 0.0)
+        assert restored.buoyancy(position, (0, 0, 0.6, 0.8)) == copy.buoyancy(position, (0, 0, 0.6, 0.8))
+
+
+@pytest.mark.parametrize(
+    "call, error, match",
+    [
+        (lambda m: m.translated((0, np.nan, 0)), ValueError, "^offset: has a NaN or infinite component$"),
+        (lambda m: m.translated((0, 1)), ValueError, r"^offset: expected 3 numbers"),
+        (lambda m: m.scaled(0), ValueError, "^factor: invalid transform: every scale factor must be finite and non-zero$"),
+        (lambda m: m.scaled((1, np.inf, 1)), ValueError, "^factor: has a NaN or infinite component$"),
+        (lambda m: m.scaled((1, 2)), ValueError, r"^factor: expected 3 numbers"),
+        (lambda m: m.transformed(np.eye(3)), ValueError, r"^matrix: expected a 4×4 homogeneous matrix .* got shape \(3, 3\)$"),
+        (lambda m: m.transformed(np.full((4, 4), np.nan)), ValueError, "^matrix: has a NaN or infinite component$"),
+        (lambda m: m.transformed(np.ones((4, 4))), ValueError, "^matrix: invalid transform: the last row"),
+        (lambda m: m.transformed(np.diag([1.0, 0.0, 1.0, 1.0])), buoyancy.MeshError, "^matrix: the mesh encloses no volume"),
+    ],
+)
+def test_transform_errors_name_the_argument(call, error: type[Exception], match: str) -> None:  # type: ignore[no-untyped-def]
+    with pytest.raises(error, match=match):
+        call(shapes.cube())
 
 
 def run_examples(text: str, name: str) -> int:
@@ -210,13 +405,22 @@ def test_docstring_examples() -> None:
         "Mesh.buoyancy": buoyancy.Mesh.buoyancy,
         "Mesh.buoyancy_batch": buoyancy.Mesh.buoyancy_batch,
         "Mesh.from_trimesh": buoyancy.Mesh.from_trimesh,
+        "Mesh.transformed": buoyancy.Mesh.transformed,
+        "Mesh.scaled": buoyancy.Mesh.scaled,
+        "Mesh.translated": buoyancy.Mesh.translated,
+        "Buoyancy": buoyancy.Buoyancy,
+        "load": buoyancy.load,
+        "cube": buoyancy.shapes.cube,
+        "uv_sphere": buoyancy.shapes.uv_sphere,
+        "torus": buoyancy.shapes.torus,
+        "torus_knot": buoyancy.shapes.torus_knot,
         "Water": buoyancy.Water,
         "Mesh.damping": buoyancy.Mesh.damping,
         "DampingCoefficients": buoyancy.DampingCoefficients,
         "DampingCoefficients.off": buoyancy.DampingCoefficients.off,
     }
-    attempted = sum(run_examples(obj.__doc__ or "", name) for name, obj in objects.items())
-    assert attempted >= 10
+    attempted = {name: run_examples(obj.__doc__ or "", name) for name, obj in objects.items()}
+    assert all(attempted.values()), f"docstrings without examples: {[n for n, k in attempted.items() if not k]}"
 
 
 def rapier3d_available() -> bool:

@@ -77,10 +77,26 @@ def test_indexing_and_repr() -> None:
     batch = cube.buoyancy_batch([[0, 0, 0], [0, -2, 0]], [[0, 0, 0, 1], [0, 0, 0, 1]])
     assert batch[-1].volume == pytest.approx(1.0) and batch[0].volume == pytest.approx(0.5)
     assert isinstance(batch[1], buoyancy.Buoyancy)
-    with pytest.raises(IndexError, match="out of range"):
+    with pytest.raises(IndexError, match="^pose index 2 out of range for a batch of 2 poses$"):
         batch[2]
+    with pytest.raises(IndexError, match="^pose index -3 out of range"):
+        batch[-3]
+    assert batch[np.int64(1)] == batch[-1]
     assert batch.volume is batch.volume  # built once, not per access
     assert repr(batch).startswith("BuoyancyBatch(2 poses")
+
+
+def test_batch_arrays_are_read_only() -> None:
+    batch = shapes.cube().buoyancy_batch([[0, 0, 0], [0, -2, 0]], None)
+    for field in (*FIELDS, "fully_submerged", "partially_submerged"):
+        array = getattr(batch, field)
+        assert not array.flags.writeable, field
+        with pytest.raises(ValueError, match="read-only"):
+            array[0] = 0
+    # What batch[k] reads is what the arrays hold.
+    for k in range(len(batch)):
+        for field in FIELDS:
+            np.testing.assert_array_equal(getattr(batch[k], field), getattr(batch, field)[k])
 
 
 def test_four_python_threads_at_once(rng: np.random.Generator) -> None:

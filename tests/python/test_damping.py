@@ -83,19 +83,28 @@ def test_current_and_about() -> None:
 
 
 def test_coefficients() -> None:
-    c = buoyancy.DampingCoefficients(linear=500, drag_coefficient=0.5, angular_linear=0.2, angular_quadratic=0, current=[0, 0, 1])
-    assert (c.linear, c.drag_coefficient, c.angular_linear, c.angular_quadratic) == (500, 0.5, 0.2, 0)
+    c = buoyancy.DampingCoefficients(
+        linear_drag=500, drag_coefficient=0.5, angular_drag_linear=0.2, angular_drag_quadratic=0, current=[0, 0, 1]
+    )
+    assert (c.linear_drag, c.drag_coefficient, c.angular_drag_linear, c.angular_drag_quadratic) == (500, 0.5, 0.2, 0)
     np.testing.assert_array_equal(c.current, [0, 0, 1])
     assert not c.is_off and buoyancy.DampingCoefficients.off().is_off
     assert buoyancy.DampingCoefficients() == buoyancy.DampingCoefficients(1000, 1, 0.1, 0.1, (0, 0, 0))
     assert c != buoyancy.DampingCoefficients()
-    assert repr(c) == "DampingCoefficients(linear=500, drag_coefficient=0.5, angular_linear=0.2, angular_quadratic=0, current=(0, 0, 1))"
+    assert repr(c) == (
+        "DampingCoefficients(linear_drag=500, drag_coefficient=0.5, angular_drag_linear=0.2, "
+        "angular_drag_quadratic=0, current=(0, 0, 1))"
+    )
     with pytest.raises(AttributeError):
-        c.linear = 3  # type: ignore[misc]
+        c.linear_drag = 3  # type: ignore[misc]
+    # Positional arguments in the core's order; numpy scalars and ints are numbers too.
+    assert buoyancy.DampingCoefficients(np.float32(500), 0.5, np.int64(0), 0) == buoyancy.DampingCoefficients(
+        linear_drag=500, drag_coefficient=0.5, angular_drag_linear=0, angular_drag_quadratic=0
+    )
     # Halving the linear coefficient halves the linear part of the drag.
     cube = shapes.cube()
-    linear_only = buoyancy.DampingCoefficients(drag_coefficient=0, angular_linear=0, angular_quadratic=0)
-    half = buoyancy.DampingCoefficients(linear=500, drag_coefficient=0, angular_linear=0, angular_quadratic=0)
+    linear_only = buoyancy.DampingCoefficients(drag_coefficient=0, angular_drag_linear=0, angular_drag_quadratic=0)
+    half = buoyancy.DampingCoefficients(linear_drag=500, drag_coefficient=0, angular_drag_linear=0, angular_drag_quadratic=0)
     f1 = cube.damping((0, -2, 0), None, (0, 1, 0), coefficients=linear_only).force
     f2 = cube.damping((0, -2, 0), None, (0, 1, 0), coefficients=half).force
     np.testing.assert_allclose(f1, [0, -1000, 0], atol=1e-9)
@@ -103,7 +112,7 @@ def test_coefficients() -> None:
 
 
 def test_pickle_and_repr() -> None:
-    c = buoyancy.DampingCoefficients(linear=123.5, current=(0.1, 0.2, 0.3))
+    c = buoyancy.DampingCoefficients(linear_drag=123.5, current=(0.1, 0.2, 0.3))
     assert pickle.loads(pickle.dumps(c)) == c
     d = shapes.cube().damping((0, -3, 0), None, (0, -2, 0))
     copy = pickle.loads(pickle.dumps(d, protocol=pickle.HIGHEST_PROTOCOL))
@@ -134,10 +143,10 @@ def test_argument_errors(kwargs, match: str) -> None:  # type: ignore[no-untyped
 @pytest.mark.parametrize(
     "kwargs, match",
     [
-        ({"linear": -1.0}, "^linear: must be finite and non-negative, got -1$"),
+        ({"linear_drag": -1.0}, "^linear_drag: must be finite and non-negative$"),
         ({"drag_coefficient": np.nan}, "^drag_coefficient: must be finite and non-negative"),
-        ({"angular_linear": np.inf}, "^angular_linear: must be finite"),
-        ({"angular_quadratic": -0.1}, "^angular_quadratic: must be finite"),
+        ({"angular_drag_linear": np.inf}, "^angular_drag_linear: must be finite"),
+        ({"angular_drag_quadratic": -0.1}, "^angular_drag_quadratic: must be finite"),
         ({"current": (0, np.nan, 0)}, "^current: has a NaN"),
         ({"current": (0, 0)}, "^current: expected 3 numbers"),
     ],
@@ -147,8 +156,21 @@ def test_coefficient_errors(kwargs, match: str) -> None:  # type: ignore[no-unty
         buoyancy.DampingCoefficients(**kwargs)
 
 
-def test_wrong_types() -> None:
-    with pytest.raises(TypeError):
+def test_wrong_types_name_the_argument() -> None:
+    with pytest.raises(TypeError, match="^coefficients: expected a buoyancy.DampingCoefficients, got buoyancy.Water$"):
         shapes.cube().damping(coefficients=buoyancy.Water())  # type: ignore[arg-type]
-    with pytest.raises(TypeError):
+    with pytest.raises(TypeError, match="^water: expected a buoyancy.Water, got buoyancy.DampingCoefficients$"):
         shapes.cube().damping(water=buoyancy.DampingCoefficients())  # type: ignore[arg-type]
+    for name in ("linear_drag", "drag_coefficient", "angular_drag_linear", "angular_drag_quadratic"):
+        with pytest.raises(TypeError, match=f"^{name}: expected a number, got str$"):
+            buoyancy.DampingCoefficients(**{name: "high"})  # type: ignore[arg-type]
+    with pytest.raises(TypeError, match="^wetted_area: expected a number, got list$"):
+        buoyancy.Damping((0, 0, 0), (0, 0, 0), (0, 0, 0), wetted_area=[1.0])  # type: ignore[arg-type]
+
+
+def test_results_are_read_only() -> None:
+    d = shapes.cube().damping((0, -3, 0), None, (0, -2, 0))
+    for array in (d.force, d.torque, d.about, buoyancy.DampingCoefficients(current=(1, 0, 0)).current):
+        assert not array.flags.writeable
+        with pytest.raises(ValueError, match="read-only"):
+            array[0] = 1.0

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import pathlib
 
 import numpy as np
@@ -24,14 +25,15 @@ def test_mesh_error_is_a_value_error() -> None:
 @pytest.mark.parametrize(
     "vertices, faces, match",
     [
+        # The core's messages, passed through (their wording is tested in buoyancy-core).
         (TET_V, [], "no triangles"),
-        ([(0, 0, 0), (1, 0, 0), (0, NAN, 0), (0, 0, 1)], TET_F, "vertex 2 has a NaN"),
-        ([(0, 0, 0), (1, 0, 0), (0, INF, 0), (0, 0, 1)], TET_F, "vertex 2 has a NaN or infinite"),
-        (TET_V, TET_F[:3] + [(1, 2, 9)], "triangle 3 refers to vertex 9, but the mesh has only 4"),
-        (TET_V, [(0, 2, 1), (0, 1, 1), (0, 3, 2), (1, 2, 3)], r"triangle 1 uses a vertex twice"),
-        (TET_V, TET_F[:3], r"not closed: edge \(1, 2\) of triangle 0"),
-        (TET_V, TET_F[:3] + [(1, 3, 2)], r"triangles 0 and 3 are oriented inconsistently: both traverse edge 2 -> 1"),
-        (TET_V + [(1, 1, -1)], TET_F + [(1, 2, 4), (2, 1, 4)], r"edge \(1, 2\) is shared by 4 triangles"),
+        ([(0, 0, 0), (1, 0, 0), (0, NAN, 0), (0, 0, 1)], TET_F, "NaN or infinite coordinate: vertex 2"),
+        ([(0, 0, 0), (1, 0, 0), (0, INF, 0), (0, 0, 1)], TET_F, "NaN or infinite coordinate: vertex 2"),
+        (TET_V, TET_F[:3] + [(1, 2, 9)], "triangle 3 refers to vertex 9"),
+        (TET_V, [(0, 2, 1), (0, 1, 1), (0, 3, 2), (1, 2, 3)], r"uses a vertex twice: triangle 1 \[0, 1, 1\]"),
+        (TET_V, TET_F[:3], r"not closed\): edge \(1, 2\) of triangle 0"),
+        (TET_V, TET_F[:3] + [(1, 3, 2)], r"triangles 0 and 3 both traverse edge 2 -> 1"),
+        (TET_V + [(1, 1, -1)], TET_F + [(1, 2, 4), (2, 1, 4)], r"edge \(1, 2\) shared by triangles 0, 3, 4, 5"),
         (TET_V, [(0, 1, 2), (0, 2, 1)], "encloses no volume"),
         (np.zeros((4, 2)), TET_F, r"vertices: expected shape \(N, 3\), got shape \(4, 2\)"),
         (np.zeros(12), TET_F, r"vertices: expected shape \(N, 3\), got shape \(12,\)"),
@@ -50,14 +52,14 @@ def test_mesh_errors(vertices, faces, match: str) -> None:  # type: ignore[no-un
 @pytest.mark.parametrize(
     "kwargs, match",
     [
-        (dict(density=0.0), "invalid water density"),
-        (dict(density=-1.0), "invalid water density"),
-        (dict(density=NAN), "invalid water density"),
-        (dict(gravity=-9.81), "invalid water gravity"),
-        (dict(gravity=INF), "invalid water gravity"),
-        (dict(level=NAN), "invalid water level"),
-        (dict(normal=(0, 0, 0)), "invalid water normal: is the zero vector"),
-        (dict(normal=(0, NAN, 0)), "normal: has a NaN or infinite component"),
+        (dict(density=0.0), r"^density: must be finite and positive \(kg/m³\)$"),
+        (dict(density=-1.0), "^density: must be finite and positive"),
+        (dict(density=NAN), "^density: must be finite and positive"),
+        (dict(gravity=-9.81), r"^gravity: must be finite and non-negative \(m/s², a magnitude\)$"),
+        (dict(gravity=INF), "^gravity: must be finite and non-negative"),
+        (dict(level=NAN), "^level: must be finite"),
+        (dict(normal=(0, 0, 0)), "^normal: is the zero vector"),
+        (dict(normal=(0, NAN, 0)), "^normal: has a NaN or infinite component"),
         (dict(normal=(0, 1)), r"normal: expected 3 numbers \(shape \(3,\)\), got shape \(2,\)"),
         (dict(normal="up"), "normal: expected an array of numbers"),
     ],
@@ -67,11 +69,72 @@ def test_water_errors(kwargs, match: str) -> None:  # type: ignore[no-untyped-de
         buoyancy.Water(**kwargs)
 
 
-def test_water_type_errors() -> None:
-    with pytest.raises(TypeError):
-        buoyancy.Water(density="dense")  # type: ignore[arg-type]
-    with pytest.raises(TypeError):
-        shapes.cube().buoyancy(water="sea")  # type: ignore[arg-type]
+def test_gravity_as_a_vector_says_how_to_write_it() -> None:
+    message = (
+        r"^gravity: expected a number, the magnitude of gravity in m/s², got tuple; its direction is -normal: "
+        r"for the vector \(0, 0, -9.81\) write Water\(gravity=9.81, normal=\(0, 0, 1\)\)$"
+    )
+    with pytest.raises(TypeError, match=message):
+        buoyancy.Water(gravity=(0, 0, -9.81))  # type: ignore[arg-type]
+    with pytest.raises(TypeError, match=r"^gravity: .* got numpy.ndarray; .* write Water\(gravity=9.81, normal=\(1, 0, 0\)\)$"):
+        buoyancy.Water(gravity=np.array([-9.81, 0, 0]))  # type: ignore[arg-type]
+    with pytest.raises(TypeError, match="^gravity: expected a number, the magnitude of gravity in m/s², got str; its direction is -normal$"):
+        buoyancy.Water(gravity="down")  # type: ignore[arg-type]
+    # What the message suggests is the same water as rapier's gravity vector (0, 0, -9.81) means.
+    assert buoyancy.Water(gravity=9.81, normal=(0, 0, 1)).normal.tolist() == [0, 0, 1]
+
+
+TET = buoyancy.Mesh(TET_V, TET_F)
+
+
+@pytest.mark.parametrize(
+    "call, message",
+    [
+        (lambda: buoyancy.Water(density="dense"), "density: expected a number, got str"),
+        (lambda: buoyancy.Water(level=[0.0]), "level: expected a number, got list"),
+        (lambda: TET.buoyancy(water="sea"), "water: expected a buoyancy.Water, got str"),
+        (lambda: TET.buoyancy(method=3), "method: expected a method name such as 'exact', got int"),
+        (lambda: TET.buoyancy(traversal=b"scan"), "traversal: expected a traversal name such as 'auto', got bytes"),
+        (lambda: TET.buoyancy_batch([(0, 0, 0)], None, water=1000), "water: expected a buoyancy.Water, got int"),
+        (lambda: TET.buoyancy_batch([(0, 0, 0)], None, threads="2"), "threads: expected an integer, got str"),
+        (lambda: TET.buoyancy_batch([(0, 0, 0)], None, threads=2.0), "threads: expected an integer, got float"),
+        (lambda: TET.damping(coefficients=0.5), "coefficients: expected a buoyancy.DampingCoefficients, got float"),
+        (lambda: buoyancy.load(3), "path: expected a str or os.PathLike, got int"),
+        (
+            lambda: buoyancy.Mesh.from_trimesh(3),
+            "obj: expected a trimesh.Trimesh or trimesh.Scene (an object with vertices and faces arrays), got int",
+        ),
+        (lambda: shapes.cube("a"), "n: expected an integer, got str"),
+        (lambda: shapes.cube(2.5), "n: expected an integer, got float"),
+        (lambda: shapes.uv_sphere(radius="1"), "radius: expected a number, got str"),
+        (lambda: shapes.uv_sphere(slices=None, stacks=1.5), "stacks: expected an integer, got float"),
+        (lambda: shapes.torus(major=(1, 2)), "major: expected a number, got tuple"),
+        (lambda: shapes.torus(segments=[3]), "segments: expected an integer, got list"),
+        (lambda: shapes.torus_knot(p="2"), "p: expected an integer, got str"),
+        (lambda: shapes.torus_knot(tube_radius=None, sides=object()), "sides: expected an integer, got object"),
+        (lambda: buoyancy.Buoyancy("1", (0, 0, 0), (0, 0, 0), (0, 0, 0), (0, 0, 0)), "volume: expected a number, got str"),
+        (lambda: buoyancy.Buoyancy(1, (0, 0, 0), (0, 0, 0), (0, 0, 0), (0, 0, 0), 1.5), "fully_submerged: expected an integer, got float"),
+        (lambda: TET.buoyancy_batch([(0, 0, 0)], None)["0"], "index: expected an integer, got str"),
+    ],
+)
+def test_wrong_types_name_the_argument(call, message: str) -> None:  # type: ignore[no-untyped-def]
+    with pytest.raises(TypeError) as error:
+        call()
+    assert str(error.value) == message
+
+
+@pytest.mark.parametrize(
+    "call, match",
+    [
+        (lambda: shapes.cube(-2), "^n: must be a non-negative integer, got -2$"),
+        (lambda: shapes.torus_knot(q=2**40), "^q: is too large$"),
+        (lambda: shapes.uv_sphere(slices=2**70), "^slices: is too large$"),
+        (lambda: TET.buoyancy_batch([(0, 0, 0)], None, threads=-1), "^threads: must be a non-negative integer, got -1$"),
+    ],
+)
+def test_out_of_range_integers_name_the_argument(call, match: str) -> None:  # type: ignore[no-untyped-def]
+    with pytest.raises(ValueError, match=match):
+        call()
 
 
 ROT_45 = np.array([[np.cos(0.7), -np.sin(0.7), 0], [np.sin(0.7), np.cos(0.7), 0], [0, 0, 1]])
@@ -141,11 +204,15 @@ def test_batch_argument_errors(args, kwargs, match: str) -> None:  # type: ignor
 
 
 def test_load_errors(tmp_path: pathlib.Path) -> None:
-    with pytest.raises(FileNotFoundError, match="no such file"):
+    with pytest.raises(FileNotFoundError, match="^cannot read .*missing.obj: "):
         buoyancy.load(tmp_path / "missing.obj")
-    (tmp_path / "mesh.ply").write_text("ply\n")
-    with pytest.raises(OSError, match="unknown format"):
-        buoyancy.load(tmp_path / "mesh.ply")
+    (tmp_path / "folder.obj").mkdir()
+    with pytest.raises(IsADirectoryError, match="folder.obj"):
+        buoyancy.load(tmp_path / "folder.obj")
+    (tmp_path / "mesh.xyz").write_text("0 0 0\n")
+    with pytest.raises(ValueError, match="^cannot read .*mesh.xyz: unknown format") as unknown:
+        buoyancy.load(tmp_path / "mesh.xyz")
+    assert not isinstance(unknown.value, (OSError, buoyancy.MeshError))
     (tmp_path / "bad.obj").write_text("v 0 0 0\nv 1 x 0\n")
     with pytest.raises(buoyancy.MeshError, match="line 2"):
         buoyancy.load(tmp_path / "bad.obj")
@@ -155,6 +222,15 @@ def test_load_errors(tmp_path: pathlib.Path) -> None:
     (tmp_path / "short.stl").write_bytes(b"\0" * 80 + (5).to_bytes(4, "little"))
     with pytest.raises(buoyancy.MeshError):
         buoyancy.load(tmp_path / "short.stl")
+
+
+@pytest.mark.skipif(not hasattr(os, "geteuid") or os.geteuid() == 0, reason="root reads any file: no permission error to provoke")
+def test_load_unreadable_file_is_a_permission_error(tmp_path: pathlib.Path) -> None:
+    path = tmp_path / "locked.obj"
+    path.write_text("v 0 0 0\n")
+    path.chmod(0)
+    with pytest.raises(PermissionError, match="locked.obj"):
+        buoyancy.load(path)
 
 
 @pytest.mark.parametrize(

@@ -103,7 +103,7 @@ def test_report_matches_the_core_at_the_body_pose() -> None:
     rb.set_additional_mass_properties(rapier3d.MassProperties((0.2, -0.1, 0.0), 300.0, (10.0, 10.0, 10.0)))
     rb.recompute_mass_properties_from_colliders(world.colliders)
     cube = buoyancy.shapes.cube(3)
-    fb = FloatingBodies.for_world(world, damping=buoyancy.DampingCoefficients(linear=10.0, drag_coefficient=0.1))
+    fb = FloatingBodies.for_world(world, damping=buoyancy.DampingCoefficients(linear_drag=10.0, drag_coefficient=0.1))
     fb.register(h, cube)
     fb.apply(world.rigid_bodies, 1 / 60)
     rb = world.rigid_bodies[h]
@@ -131,7 +131,7 @@ def test_damping_is_clamped_to_stop_the_motion_at_most() -> None:
     # A neutrally buoyant cube under water moving down fast, with a huge drag: unclamped, one
     # step of drag would throw it upwards; clamped, it can at most stop.
     world, h = world_with_cube(y=-3.0, density=1000.0, linvel=(0.0, -5.0, 0.0), angvel=(0.0, 4.0, 0.0))
-    fb = FloatingBodies.for_world(world, damping=buoyancy.DampingCoefficients(linear=1e7, angular_linear=1e5))
+    fb = FloatingBodies.for_world(world, damping=buoyancy.DampingCoefficients(linear_drag=1e7, angular_drag_linear=1e5))
     fb.register(h, buoyancy.shapes.cube())
     dt = world.integration_parameters.dt
     mass = world.rigid_bodies[h].mass

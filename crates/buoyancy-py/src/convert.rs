@@ -1,23 +1,102 @@
-//! Python inputs to Rust values: vectors, rotations and (K, …) arrays, with errors that name the
-//! argument. Tuples and lists of numbers take a fast path; anything else goes through
-//! `numpy.asarray(…, dtype=float64)`.
+//! Python inputs to Rust values: numbers, counts, names, instances, vectors, rotations and
+//! (K, …) arrays, with errors that name the argument (`TypeError` for a wrong type, `ValueError`
+//! for a wrong value). Tuples and lists of numbers take a fast path; other array-likes go
+//! through `numpy.asarray(…, dtype=float64)`.
 
-use std::fmt::Display;
-
-use buoyancy_core::nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
+use buoyancy_core::nalgebra::{Matrix3, Matrix4, Quaternion, Rotation3, UnitQuaternion, Vector3};
+use buoyancy_core::{Method, Traversal};
 use numpy::{AllowTypeChange, PyArrayLikeDyn, PyUntypedArrayMethods};
-use pyo3::exceptions::PyValueError;
+use pyo3::PyTypeInfo;
+use pyo3::exceptions::PyOverflowError;
 use pyo3::prelude::*;
-use pyo3::types::{PyList, PyTuple};
+use pyo3::types::{PyList, PyString, PyTuple};
+
+use crate::errors::{arg_error, to_py, type_error};
+use crate::format::g;
 
 /// A quaternion whose norm differs from 1 by more than this is rejected; within it, normalised.
 pub const QUATERNION_TOLERANCE: f64 = 1e-5;
 /// A 3×3 matrix whose `RᵀR` differs from the identity by more than this (any entry) is rejected.
 pub const MATRIX_TOLERANCE: f64 = 1e-5;
 
-/// `ValueError("{name}: {message}")`.
-pub fn arg_error(name: &str, message: impl Display) -> PyErr {
-    PyValueError::new_err(format!("{name}: {message}"))
+/// An optional argument that was given, and not as `None`.
+pub fn given<'a, 'py>(obj: Option<&'a Bound<'py, PyAny>>) -> Option<&'a Bound<'py, PyAny>> {
+    obj.filter(|o| !o.is_none())
+}
+
+/// A real number (a Python `int` or `float`, a NumPy scalar, anything with `__float__`).
+pub fn real(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<f64> {
+    obj.extract::<f64>()
+        .map_err(|_| type_error(name, "a number", obj))
+}
+
+/// [`real`], or `default` when the argument is absent or `None`.
+pub fn real_or(obj: Option<&Bound<'_, PyAny>>, name: &str, default: f64) -> PyResult<f64> {
+    given(obj).map_or(Ok(default), |o| real(o, name))
+}
+
+/// A non-negative integer (a Python `int`, a NumPy integer, anything with `__index__`).
+pub fn count(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<usize> {
+    match obj.extract::<i64>() {
+        Ok(n) => usize::try_from(n)
+            .map_err(|_| arg_error(name, format!("must be a non-negative integer, got {n}"))),
+        Err(e) if e.is_instance_of::<PyOverflowError>(obj.py()) => {
+            Err(arg_error(name, "is too large"))
+        }
+        Err(_) => Err(type_error(name, "an integer", obj)),
+    }
+}
+
+/// [`count`], or `default` when the argument is absent or `None`.
+pub fn count_or(obj: Option<&Bound<'_, PyAny>>, name: &str, default: usize) -> PyResult<usize> {
+    given(obj).map_or(Ok(default), |o| count(o, name))
+}
+
+/// A string argument.
+fn text(obj: &Bound<'_, PyAny>, name: &str, expected: &str) -> PyResult<String> {
+    let s = obj
+        .cast::<PyString>()
+        .map_err(|_| type_error(name, expected, obj))?;
+    Ok(s.to_str()?.to_owned())
+}
+
+/// A method name in any spelling the core accepts (`"exact_surface"`, `"ExactSurface"`,
+/// `"exact-surface"`), or [`Method::Exact`] when absent or `None`.
+pub fn method(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Method> {
+    let Some(obj) = given(obj) else {
+        return Ok(Method::Exact);
+    };
+    text(obj, "method", "a method name such as 'exact'")?
+        .parse()
+        .map_err(|e| to_py(e, Some("method")))
+}
+
+/// A traversal name in any spelling the core accepts, or [`Traversal::Auto`] when absent or
+/// `None`.
+pub fn traversal(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Traversal> {
+    let Some(obj) = given(obj) else {
+        return Ok(Traversal::Auto);
+    };
+    text(obj, "traversal", "a traversal name such as 'auto'")?
+        .parse()
+        .map_err(|e| to_py(e, Some("traversal")))
+}
+
+/// An instance of the class `T` (`water`, `coefficients`), or `None` when absent or `None`.
+pub fn instance<'a, 'py, T: PyTypeInfo>(
+    obj: Option<&'a Bound<'py, PyAny>>,
+    name: &str,
+) -> PyResult<Option<&'a Bound<'py, T>>> {
+    let Some(obj) = given(obj) else {
+        return Ok(None);
+    };
+    match obj.cast::<T>() {
+        Ok(value) => Ok(Some(value)),
+        Err(_) => {
+            let class = T::type_object(obj.py()).name()?;
+            Err(type_error(name, format!("a buoyancy.{class}"), obj))
+        }
+    }
 }
 
 /// An array-like converted to float64, as (shape, values in C order).
@@ -159,7 +238,7 @@ pub fn matrix(m: &[f64], name: &str) -> PyResult<UnitQuaternion<f64>> {
             name,
             format!(
                 "the 3×3 matrix is not a rotation: RᵀR differs from the identity by {}",
-                crate::result::g(worst)
+                g(worst)
             ),
         ));
     }
@@ -223,4 +302,20 @@ pub fn rotations(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<UnitQuatern
             ),
         )),
     }
+}
+
+/// An affine map as a 4×4 homogeneous matrix (row-major values), finite.
+pub fn matrix4(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Matrix4<f64>> {
+    let a = floats(obj, name)?;
+    if a.shape != [4, 4] {
+        return Err(arg_error(
+            name,
+            format!(
+                "expected a 4×4 homogeneous matrix [[A, b], [0, 0, 0, 1]], got shape {}",
+                shape_str(&a.shape)
+            ),
+        ));
+    }
+    finite(&a.values, name)?;
+    Ok(Matrix4::from_row_slice(&a.values))
 }

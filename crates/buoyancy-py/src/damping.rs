@@ -1,5 +1,5 @@
 //! The hydrodynamic damping model of `buoyancy_core::damping`: `DampingCoefficients` (the
-//! model's parameters) and `Damping` (one evaluation). `Mesh.damping` itself is in `lib.rs`.
+//! model's parameters) and `Damping` (one evaluation). `Mesh.damping` itself is in `mesh.rs`.
 
 use buoyancy_core::DampingCoefficients;
 use buoyancy_core::nalgebra::Vector3;
@@ -7,8 +7,10 @@ use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyType;
 
-use crate::convert::{self, arg_error};
-use crate::result::{g, g3};
+use crate::arrays;
+use crate::convert;
+use crate::errors::to_py;
+use crate::format::{g, g3};
 
 type V3 = (f64, f64, f64);
 
@@ -16,44 +18,51 @@ fn tuple(v: &[f64; 3]) -> V3 {
     (v[0], v[1], v[2])
 }
 
+/// `DampingCoefficients(linear_drag, drag_coefficient, angular_drag_linear,
+/// angular_drag_quadratic, current)`'s arguments.
+type CoefficientArgs = (f64, f64, f64, f64, V3);
+/// `Damping(force, torque, about, wetted_area, wetted_fraction)`'s arguments.
+type DampingArgs = (V3, V3, V3, f64, f64);
+
 /// The coefficients of the hydrodynamic damping model, SI units.
 ///
 /// The model (``buoyancy-core``'s ``damping`` module) damps a body moving through the water so
 /// that it settles instead of bobbing forever. With ``u`` the velocity of a surface point
 /// relative to the water (``current``), each wetted triangle of area ``A`` and outward normal
 /// ``n`` moving into the water (``u_n = n·u > 0``) feels the pressure
-/// ``linear * u_n + 0.5 * density * drag_coefficient * u_n**2`` against its normal; the body
-/// also feels the angular damping torque
-/// ``-f * density * V**(5/3) * (angular_linear + angular_quadratic * |ω|) * ω``, with ``f`` the
-/// wetted fraction of its surface and ``V`` its volume. Nothing acts on what is above water.
+/// ``linear_drag * u_n + 0.5 * density * drag_coefficient * u_n**2`` against its normal; the
+/// body also feels the angular damping torque
+/// ``-f * density * V**(5/3) * (angular_drag_linear + angular_drag_quadratic * |ω|) * ω``, with
+/// ``f`` the wetted fraction of its surface and ``V`` its volume. Nothing acts on what is above
+/// water.
 ///
 /// Parameters
 /// ----------
-/// linear : float
-///     Linear pressure-drag coefficient, Pa per m/s (default 1000).
+/// linear_drag : float
+///     Linear pressure-drag coefficient ``c₁``, Pa per m/s (default 1000).
 /// drag_coefficient : float
 ///     Dimensionless quadratic drag coefficient ``C_D`` (default 1; a flat plate face-on is about
 ///     1.2, a sphere about 0.5).
-/// angular_linear : float
-///     Linear angular damping rate, 1/s (default 0.1).
-/// angular_quadratic : float
-///     Dimensionless quadratic angular damping coefficient (default 0.1).
+/// angular_drag_linear : float
+///     Linear angular damping rate ``a₁``, 1/s (default 0.1).
+/// angular_drag_quadratic : float
+///     Dimensionless quadratic angular damping coefficient ``a₂`` (default 0.1).
 /// current : array_like, shape (3,)
 ///     Velocity of the water, world frame, m/s (default zero).
 ///
 /// Every coefficient must be finite and non-negative, and the current finite; anything else
-/// raises ``ValueError`` naming the parameter.
+/// raises ``ValueError`` naming the parameter (``TypeError`` for a value that is not a number).
 ///
 /// Examples
 /// --------
 /// >>> buoyancy.DampingCoefficients()
-/// DampingCoefficients(linear=1000, drag_coefficient=1, angular_linear=0.1, angular_quadratic=0.1, current=(0, 0, 0))
+/// DampingCoefficients(linear_drag=1000, drag_coefficient=1, angular_drag_linear=0.1, angular_drag_quadratic=0.1, current=(0, 0, 0))
 /// >>> buoyancy.DampingCoefficients.off().is_off
 /// True
-/// >>> buoyancy.DampingCoefficients(linear=-1.0)
+/// >>> buoyancy.DampingCoefficients(linear_drag=-1.0)
 /// Traceback (most recent call last):
 /// ...
-/// ValueError: linear: must be finite and non-negative, got -1
+/// ValueError: linear_drag: must be finite and non-negative
 ///
 /// ``DampingCoefficients`` is immutable, compares by value and pickles.
 #[pyclass(frozen, eq, module = "buoyancy", name = "DampingCoefficients")]
@@ -62,50 +71,56 @@ pub struct PyDampingCoefficients {
     pub inner: DampingCoefficients<f64>,
 }
 
-fn coefficient(value: f64, name: &str) -> PyResult<f64> {
-    if value.is_finite() && value >= 0.0 {
-        Ok(value)
-    } else {
-        Err(arg_error(
-            name,
-            format!("must be finite and non-negative, got {}", g(value)),
-        ))
-    }
-}
-
 #[pymethods]
 impl PyDampingCoefficients {
     #[new]
     #[pyo3(
-        signature = (linear=1000.0, drag_coefficient=1.0, angular_linear=0.1, angular_quadratic=0.1, current=None),
-        text_signature = "(linear=1000.0, drag_coefficient=1.0, angular_linear=0.1, angular_quadratic=0.1, current=(0.0, 0.0, 0.0))"
+        signature = (linear_drag=None, drag_coefficient=None, angular_drag_linear=None, angular_drag_quadratic=None, current=None),
+        text_signature = "(linear_drag=1000.0, drag_coefficient=1.0, angular_drag_linear=0.1, angular_drag_quadratic=0.1, current=(0.0, 0.0, 0.0))"
     )]
     fn new(
-        linear: f64,
-        drag_coefficient: f64,
-        angular_linear: f64,
-        angular_quadratic: f64,
+        linear_drag: Option<&Bound<'_, PyAny>>,
+        drag_coefficient: Option<&Bound<'_, PyAny>>,
+        angular_drag_linear: Option<&Bound<'_, PyAny>>,
+        angular_drag_quadratic: Option<&Bound<'_, PyAny>>,
         current: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
-        let current = match current {
-            Some(c) if !c.is_none() => convert::vector3(c, "current")?,
-            _ => Vector3::zeros(),
+        let default = DampingCoefficients::<f64>::default();
+        let linear_drag = convert::real_or(linear_drag, "linear_drag", default.linear_drag())?;
+        let drag_coefficient = convert::real_or(
+            drag_coefficient,
+            "drag_coefficient",
+            default.drag_coefficient(),
+        )?;
+        let angular_drag_linear = convert::real_or(
+            angular_drag_linear,
+            "angular_drag_linear",
+            default.angular_drag_linear(),
+        )?;
+        let angular_drag_quadratic = convert::real_or(
+            angular_drag_quadratic,
+            "angular_drag_quadratic",
+            default.angular_drag_quadratic(),
+        )?;
+        let current = match convert::given(current) {
+            Some(c) => convert::vector3(c, "current")?,
+            None => Vector3::zeros(),
         };
         let inner = DampingCoefficients::new(
-            coefficient(linear, "linear")?,
-            coefficient(drag_coefficient, "drag_coefficient")?,
-            coefficient(angular_linear, "angular_linear")?,
-            coefficient(angular_quadratic, "angular_quadratic")?,
+            linear_drag,
+            drag_coefficient,
+            angular_drag_linear,
+            angular_drag_quadratic,
         )
         .and_then(|c| c.with_current(current))
-        .map_err(|e| crate::to_py(e, None))?;
+        .map_err(|e| to_py(e, None))?;
         Ok(PyDampingCoefficients { inner })
     }
 
     /// No damping at all: ``Mesh.damping`` then returns zero force and torque.
     ///
     /// >>> buoyancy.DampingCoefficients.off()
-    /// DampingCoefficients(linear=0, drag_coefficient=0, angular_linear=0, angular_quadratic=0, current=(0, 0, 0))
+    /// DampingCoefficients(linear_drag=0, drag_coefficient=0, angular_drag_linear=0, angular_drag_quadratic=0, current=(0, 0, 0))
     #[classmethod]
     fn off(_cls: &Bound<'_, PyType>) -> Self {
         PyDampingCoefficients {
@@ -113,9 +128,9 @@ impl PyDampingCoefficients {
         }
     }
 
-    /// Linear pressure-drag coefficient, Pa per m/s.
+    /// Linear pressure-drag coefficient ``c₁``, Pa per m/s.
     #[getter]
-    fn linear(&self) -> f64 {
+    fn linear_drag(&self) -> f64 {
         self.inner.linear_drag()
     }
     /// Dimensionless quadratic pressure-drag coefficient ``C_D``.
@@ -123,20 +138,20 @@ impl PyDampingCoefficients {
     fn drag_coefficient(&self) -> f64 {
         self.inner.drag_coefficient()
     }
-    /// Linear angular damping rate, 1/s.
+    /// Linear angular damping rate ``a₁``, 1/s.
     #[getter]
-    fn angular_linear(&self) -> f64 {
+    fn angular_drag_linear(&self) -> f64 {
         self.inner.angular_drag_linear()
     }
-    /// Dimensionless quadratic angular damping coefficient.
+    /// Dimensionless quadratic angular damping coefficient ``a₂``.
     #[getter]
-    fn angular_quadratic(&self) -> f64 {
+    fn angular_drag_quadratic(&self) -> f64 {
         self.inner.angular_drag_quadratic()
     }
-    /// Velocity of the water, world frame, m/s, shape (3,).
+    /// Velocity of the water, world frame, m/s, shape (3,) (a new, read-only array).
     #[getter]
     fn current<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_slice(py, self.inner.current().as_slice())
+        arrays::vector(py, self.inner.current().as_slice())
     }
     /// Whether every coefficient is zero (the current alone damps nothing).
     #[getter]
@@ -147,7 +162,7 @@ impl PyDampingCoefficients {
     fn __repr__(&self) -> String {
         let c = &self.inner;
         format!(
-            "DampingCoefficients(linear={}, drag_coefficient={}, angular_linear={}, angular_quadratic={}, current=({}, {}, {}))",
+            "DampingCoefficients(linear_drag={}, drag_coefficient={}, angular_drag_linear={}, angular_drag_quadratic={}, current=({}, {}, {}))",
             g(c.linear_drag()),
             g(c.drag_coefficient()),
             g(c.angular_drag_linear()),
@@ -158,8 +173,7 @@ impl PyDampingCoefficients {
         )
     }
 
-    #[allow(clippy::type_complexity)]
-    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, (f64, f64, f64, f64, V3)) {
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, CoefficientArgs) {
         let c = slf.get().inner;
         (
             slf.get_type(),
@@ -192,8 +206,8 @@ impl PyDampingCoefficients {
 ///     ``wetted_area`` over the whole surface area, in [0, 1].
 ///
 /// ``Damping(force, torque, about, wetted_area=0.0, wetted_fraction=0.0)`` builds one (for
-/// unpickling and tests). It is immutable, compares by value, and each array attribute returns a
-/// new array.
+/// unpickling and tests). It is immutable, compares by value and pickles; each array attribute
+/// returns a new, read-only array.
 #[pyclass(frozen, eq, module = "buoyancy", name = "Damping")]
 #[derive(Clone, Copy, PartialEq)]
 pub struct PyDamping {
@@ -224,34 +238,37 @@ impl PyDamping {
 #[pymethods]
 impl PyDamping {
     #[new]
-    #[pyo3(signature = (force, torque, about, wetted_area=0.0, wetted_fraction=0.0))]
+    #[pyo3(
+        signature = (force, torque, about, wetted_area=None, wetted_fraction=None),
+        text_signature = "(force, torque, about, wetted_area=0.0, wetted_fraction=0.0)"
+    )]
     fn py_new(
         force: &Bound<'_, PyAny>,
         torque: &Bound<'_, PyAny>,
         about: &Bound<'_, PyAny>,
-        wetted_area: f64,
-        wetted_fraction: f64,
+        wetted_area: Option<&Bound<'_, PyAny>>,
+        wetted_fraction: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         Ok(PyDamping {
             force: convert::vector3(force, "force")?.into(),
             torque: convert::vector3(torque, "torque")?.into(),
             about: convert::vector3(about, "about")?.into(),
-            wetted_area,
-            wetted_fraction,
+            wetted_area: convert::real_or(wetted_area, "wetted_area", 0.0)?,
+            wetted_fraction: convert::real_or(wetted_fraction, "wetted_fraction", 0.0)?,
         })
     }
 
     #[getter]
     fn force<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_slice(py, &self.force)
+        arrays::vector(py, &self.force)
     }
     #[getter]
     fn torque<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_slice(py, &self.torque)
+        arrays::vector(py, &self.torque)
     }
     #[getter]
     fn about<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_slice(py, &self.about)
+        arrays::vector(py, &self.about)
     }
     #[getter]
     fn wetted_area(&self) -> f64 {
@@ -273,8 +290,7 @@ impl PyDamping {
         )
     }
 
-    #[allow(clippy::type_complexity)]
-    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, (V3, V3, V3, f64, f64)) {
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, DampingArgs) {
         let d = slf.get();
         (
             slf.get_type(),

@@ -1,13 +1,17 @@
 //! The result types: `Buoyancy` (one pose) and `BuoyancyBatch` (K poses).
 
 use buoyancy_core::Method;
-use numpy::ndarray::{Array1, Array2};
-use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayMethods};
+use numpy::{PyArray1, PyArray2};
 use pyo3::exceptions::PyIndexError;
 use pyo3::prelude::*;
+use pyo3::types::PyType;
+
+use crate::arrays;
+use crate::convert;
+use crate::format::{g, g3};
 
 /// One evaluation, world frame, SI units.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Row {
     pub volume: f64,
     pub center: [f64; 3],
@@ -32,32 +36,15 @@ impl Row {
     }
 }
 
-/// A number the way Python's `%.6g` prints it.
-pub fn g(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return format!("{}", if x == 0.0 { 0.0 } else { x });
-    }
-    let exponent = x.abs().log10().floor() as i32;
-    let trim = |s: String| -> String {
-        if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s
-        }
-    };
-    if (-5..6).contains(&exponent) {
-        trim(format!("{:.*}", (5 - exponent).max(0) as usize, x))
-    } else {
-        let s = format!("{x:.5e}");
-        let (mantissa, exp) = s.split_once('e').unwrap_or((&s, "0"));
-        format!("{}e{exp}", trim(mantissa.to_string()))
-    }
+type V3 = (f64, f64, f64);
+
+fn tuple(v: &[f64; 3]) -> V3 {
+    (v[0], v[1], v[2])
 }
 
-/// `[a, b, c]` with `%.6g` numbers.
-pub fn g3(v: &[f64; 3]) -> String {
-    format!("[{}, {}, {}]", g(v[0]), g(v[1]), g(v[2]))
-}
+/// `Buoyancy(volume, center, force, torque, about, fully_submerged, partially_submerged,
+/// method)`'s arguments.
+type BuoyancyArgs = (f64, V3, V3, V3, V3, usize, usize, &'static str);
 
 /// The buoyancy of a body at one pose, world frame, SI units (m, m³, N, N·m).
 ///
@@ -79,8 +66,20 @@ pub fn g3(v: &[f64; 3]) -> String {
 /// method : str
 ///     The method that computed it.
 ///
-/// Each array attribute returns a new array.
-#[pyclass(frozen, module = "buoyancy", name = "Buoyancy")]
+/// ``Buoyancy(volume, center, force, torque, about, fully_submerged=0, partially_submerged=0,
+/// method="exact")`` builds one (for unpickling and tests). It is immutable, compares by value
+/// and pickles; each array attribute returns a new, read-only array.
+///
+/// Examples
+/// --------
+/// >>> b = buoyancy.shapes.cube().buoyancy(position=(0, -0.25, 0))
+/// >>> b.volume, b.center.tolist(), b.method
+/// (0.75, [0.0, -0.375, 0.0], 'exact')
+/// >>> import pickle
+/// >>> pickle.loads(pickle.dumps(b)) == b
+/// True
+#[pyclass(frozen, eq, module = "buoyancy", name = "Buoyancy")]
+#[derive(Clone, Copy, PartialEq)]
 pub struct PyBuoyancy {
     pub row: Row,
     pub method: Method,
@@ -88,25 +87,59 @@ pub struct PyBuoyancy {
 
 #[pymethods]
 impl PyBuoyancy {
+    #[new]
+    #[pyo3(
+        signature = (volume, center, force, torque, about, fully_submerged=None, partially_submerged=None, method=None),
+        text_signature = "(volume, center, force, torque, about, fully_submerged=0, partially_submerged=0, method='exact')"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn py_new(
+        volume: &Bound<'_, PyAny>,
+        center: &Bound<'_, PyAny>,
+        force: &Bound<'_, PyAny>,
+        torque: &Bound<'_, PyAny>,
+        about: &Bound<'_, PyAny>,
+        fully_submerged: Option<&Bound<'_, PyAny>>,
+        partially_submerged: Option<&Bound<'_, PyAny>>,
+        method: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        Ok(PyBuoyancy {
+            row: Row {
+                volume: convert::real(volume, "volume")?,
+                center: convert::vector3(center, "center")?.into(),
+                force: convert::vector3(force, "force")?.into(),
+                torque: convert::vector3(torque, "torque")?.into(),
+                about: convert::vector3(about, "about")?.into(),
+                fully_submerged: convert::count_or(fully_submerged, "fully_submerged", 0)?,
+                partially_submerged: convert::count_or(
+                    partially_submerged,
+                    "partially_submerged",
+                    0,
+                )?,
+            },
+            method: convert::method(method)?,
+        })
+    }
+
     #[getter]
     fn volume(&self) -> f64 {
         self.row.volume
     }
     #[getter]
     fn center<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_slice(py, &self.row.center)
+        arrays::vector(py, &self.row.center)
     }
     #[getter]
     fn force<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_slice(py, &self.row.force)
+        arrays::vector(py, &self.row.force)
     }
     #[getter]
     fn torque<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_slice(py, &self.row.torque)
+        arrays::vector(py, &self.row.torque)
     }
     #[getter]
     fn about<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_slice(py, &self.row.about)
+        arrays::vector(py, &self.row.about)
     }
     #[getter]
     fn fully_submerged(&self) -> usize {
@@ -132,6 +165,24 @@ impl PyBuoyancy {
             self.method
         )
     }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, BuoyancyArgs) {
+        let b = slf.get();
+        let r = &b.row;
+        (
+            slf.get_type(),
+            (
+                r.volume,
+                tuple(&r.center),
+                tuple(&r.force),
+                tuple(&r.torque),
+                tuple(&r.about),
+                r.fully_submerged,
+                r.partially_submerged,
+                b.method.name(),
+            ),
+        )
+    }
 }
 
 /// The buoyancy of a body at K poses: arrays indexed by pose, world frame, SI units.
@@ -148,7 +199,8 @@ impl PyBuoyancy {
 /// method : str
 ///
 /// ``len(batch)`` is K; ``batch[k]`` is the :class:`Buoyancy` of pose ``k``. The arrays are
-/// created once: attribute access returns the same array.
+/// created once and are read-only: attribute access returns the same array, and writing to it
+/// raises ``ValueError`` (``np.array(batch.force)`` is a copy to change).
 #[pyclass(frozen, module = "buoyancy", name = "BuoyancyBatch")]
 pub struct PyBuoyancyBatch {
     rows: Vec<Row>,
@@ -164,27 +216,15 @@ pub struct PyBuoyancyBatch {
 
 impl PyBuoyancyBatch {
     pub fn new(py: Python<'_>, rows: Vec<Row>, method: Method) -> Self {
-        let k = rows.len();
-        let column3 = |f: fn(&Row) -> [f64; 3]| -> Py<PyArray2<f64>> {
-            let flat: Vec<f64> = rows.iter().flat_map(f).collect();
-            Array2::from_shape_vec((k, 3), flat)
-                .expect("K×3 values")
-                .into_pyarray(py)
-                .unbind()
-        };
-        let counts = |f: fn(&Row) -> usize| -> Py<PyArray1<i64>> {
-            Array1::from_iter(rows.iter().map(|r| f(r) as i64))
-                .into_pyarray(py)
-                .unbind()
-        };
+        let rows3 = |f: fn(&Row) -> [f64; 3]| arrays::rows3(py, rows.iter().map(f)).unbind();
+        let counts =
+            |f: fn(&Row) -> usize| arrays::column(py, rows.iter().map(|r| f(r) as i64)).unbind();
         PyBuoyancyBatch {
-            volume: Array1::from_iter(rows.iter().map(|r| r.volume))
-                .into_pyarray(py)
-                .unbind(),
-            center: column3(|r| r.center),
-            force: column3(|r| r.force),
-            torque: column3(|r| r.torque),
-            about: column3(|r| r.about),
+            volume: arrays::column(py, rows.iter().map(|r| r.volume)).unbind(),
+            center: rows3(|r| r.center),
+            force: rows3(|r| r.force),
+            torque: rows3(|r| r.torque),
+            about: rows3(|r| r.about),
             fully_submerged: counts(|r| r.fully_submerged),
             partially_submerged: counts(|r| r.partially_submerged),
             rows,
@@ -232,34 +272,39 @@ impl PyBuoyancyBatch {
         self.rows.len()
     }
 
-    fn __getitem__(&self, index: isize) -> PyResult<PyBuoyancy> {
-        let k = self.rows.len() as isize;
-        let i = if index < 0 { index + k } else { index };
-        if !(0..k).contains(&i) {
-            return Err(PyIndexError::new_err(format!(
-                "pose index {index} out of range for a batch of {k} poses"
-            )));
+    fn __getitem__(&self, index: &Bound<'_, PyAny>) -> PyResult<PyBuoyancy> {
+        let k = self.rows.len();
+        let i: isize = index
+            .extract()
+            .map_err(|_| crate::errors::type_error("index", "an integer", index))?;
+        let row = if i < 0 {
+            k.checked_sub(i.unsigned_abs())
+        } else {
+            Some(i.unsigned_abs()).filter(|&i| i < k)
         }
-        Ok(PyBuoyancy {
-            row: self.rows[i as usize],
-            method: self.method,
-        })
+        .and_then(|i| self.rows.get(i));
+        match row {
+            Some(&row) => Ok(PyBuoyancy {
+                row,
+                method: self.method,
+            }),
+            None => Err(PyIndexError::new_err(format!(
+                "pose index {i} out of range for a batch of {k} poses"
+            ))),
+        }
     }
 
-    fn __repr__(&self, py: Python<'_>) -> String {
-        let volume = self.volume.bind(py).readonly();
-        let v = volume.as_array();
-        let (lo, hi) = v
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
-                (lo.min(x), hi.max(x))
-            });
-        if v.is_empty() {
+    fn __repr__(&self) -> String {
+        let volumes = self.rows.iter().map(|r| r.volume);
+        let (lo, hi) = volumes.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
+            (lo.min(x), hi.max(x))
+        });
+        if self.rows.is_empty() {
             format!("BuoyancyBatch(0 poses, method='{}')", self.method)
         } else {
             format!(
                 "BuoyancyBatch({} poses, volume from {} to {}, method='{}')",
-                v.len(),
+                self.rows.len(),
                 g(lo),
                 g(hi),
                 self.method

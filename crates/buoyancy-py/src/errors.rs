@@ -1,0 +1,80 @@
+//! Errors as Python sees them: `MeshError`, and the mapping of the core's [`Error`] to Python
+//! exceptions, each message starting with the name of the argument at fault.
+
+use std::fmt::Display;
+use std::io::ErrorKind;
+
+use buoyancy_core::Error;
+use pyo3::create_exception;
+use pyo3::exceptions::{
+    PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyPermissionError, PyTypeError,
+    PyValueError,
+};
+use pyo3::prelude::*;
+
+create_exception!(
+    buoyancy,
+    MeshError,
+    PyValueError,
+    "A mesh that cannot be used: not a closed, consistently oriented 2-manifold, bad vertex or face\narrays, or a mesh file that cannot be parsed. The message names the vertex, triangle or edge."
+);
+
+/// `ValueError("{name}: {message}")`: an argument of the right type with a wrong value.
+pub fn arg_error(name: &str, message: impl Display) -> PyErr {
+    PyValueError::new_err(format!("{name}: {message}"))
+}
+
+/// `TypeError("{name}: expected {expected}, got {type of obj}")`: an argument of the wrong type.
+pub fn type_error(name: &str, expected: impl Display, obj: &Bound<'_, PyAny>) -> PyErr {
+    PyTypeError::new_err(format!(
+        "{name}: expected {expected}, got {}",
+        type_name(obj)
+    ))
+}
+
+/// The name of `obj`'s type as Python prints it (`float`, `tuple`, `numpy.ndarray`).
+pub fn type_name(obj: &Bound<'_, PyAny>) -> String {
+    let ty = obj.get_type();
+    let name = ty.name().map_or_else(|_| "?".into(), |n| n.to_string());
+    match ty.module() {
+        Ok(module) if module != "builtins" => format!("{module}.{name}"),
+        _ => name,
+    }
+}
+
+/// The Python exception for a core error:
+///
+/// * a parameter out of range (shape, water, damping) is a `ValueError` naming the parameter;
+/// * a mesh that cannot be used, or a file that cannot be parsed, is a [`MeshError`];
+/// * a file that cannot be read is the `OSError` subclass of its kind (`FileNotFoundError`,
+///   `PermissionError`, `IsADirectoryError`, else `OSError`), and one of an unknown format a
+///   `ValueError`;
+/// * anything else is a `ValueError`.
+///
+/// The message is prefixed with `argument` when given (`"pose 3: …"`).
+pub fn to_py(e: Error, argument: Option<&str>) -> PyErr {
+    match e {
+        Error::InvalidShape { parameter, reason }
+        | Error::InvalidWater { parameter, reason }
+        | Error::InvalidDamping { parameter, reason } => return arg_error(parameter, reason),
+        _ => {}
+    }
+    let message = match argument {
+        Some(name) => format!("{name}: {e}"),
+        None => e.to_string(),
+    };
+    match e {
+        Error::EmptyMesh
+        | Error::TooManyVertices { .. }
+        | Error::InvalidMesh(_)
+        | Error::ZeroVolume { .. }
+        | Error::Parse { .. } => MeshError::new_err(message),
+        Error::Io { kind, .. } => match kind {
+            ErrorKind::NotFound => PyFileNotFoundError::new_err(message),
+            ErrorKind::PermissionDenied => PyPermissionError::new_err(message),
+            ErrorKind::IsADirectory => PyIsADirectoryError::new_err(message),
+            _ => PyOSError::new_err(message),
+        },
+        _ => PyValueError::new_err(message),
+    }
+}

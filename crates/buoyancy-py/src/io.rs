@@ -1,0 +1,43 @@
+//! `load`: a mesh read from a file by `buoyancy_core::io`.
+
+use std::path::PathBuf;
+
+use pyo3::prelude::*;
+
+use crate::errors::{to_py, type_error};
+use crate::mesh::PyMesh;
+
+/// Reads a closed triangle mesh from a file, its format chosen by the extension (as
+/// ``buoyancy-core``'s ``io::load`` reads them: ``.obj``, ``.stl`` ASCII or binary, …).
+///
+/// Parameters
+/// ----------
+/// path : str or os.PathLike
+///     The file.
+///
+/// Raises
+/// ------
+/// FileNotFoundError, PermissionError, IsADirectoryError, OSError
+///     If the file cannot be read (the ``OSError`` subclass of the operating system's reason).
+/// ValueError
+///     If the extension names no format that can be read.
+/// MeshError
+///     If the file cannot be parsed, or its mesh is not closed and oriented.
+///
+/// Examples
+/// --------
+/// >>> import pathlib, tempfile
+/// >>> path = pathlib.Path(tempfile.mkdtemp()) / "tetrahedron.obj"
+/// >>> _ = path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n")
+/// >>> buoyancy.load(path)
+/// Mesh(n_vertices=4, n_triangles=4, volume=0.166667, centroid=[0.25, 0.25, 0.25])
+#[pyfunction]
+pub fn load(py: Python<'_>, path: &Bound<'_, PyAny>) -> PyResult<PyMesh> {
+    let path: PathBuf = path
+        .extract()
+        .map_err(|_| type_error("path", "a str or os.PathLike", path))?;
+    let shape = py
+        .detach(|| buoyancy_core::io::load::<f64>(&path))
+        .map_err(|e| to_py(e, None))?;
+    PyMesh::build(py, shape)
+}

@@ -1,0 +1,665 @@
+//! `Mesh`: a closed triangle mesh, and its queries (buoyancy at one pose or many, damping) and
+//! transformed copies.
+
+use std::collections::hash_map::DefaultHasher;
+use std::hash::{Hash, Hasher};
+use std::sync::OnceLock;
+
+use buoyancy_core::nalgebra::{Matrix4, Point3, Translation3, UnitQuaternion, Vector3};
+use buoyancy_core::{Error, Pose};
+use numpy::{PyArray1, PyArray2};
+use pyo3::prelude::*;
+use pyo3::types::PyType;
+
+use crate::arrays;
+use crate::batch::{About, Batch};
+use crate::convert::{self, floats, given, shape_str};
+use crate::damping::{PyDamping, PyDampingCoefficients};
+use crate::detach::detach_if_large;
+use crate::errors::{MeshError, arg_error, to_py, type_error};
+use crate::format::{g, g3};
+use crate::result::{PyBuoyancy, PyBuoyancyBatch, Row};
+use crate::threads;
+use crate::water::PyWater;
+
+/// Vertices and triangles, as `buoyancy_core::Mesh::new` takes them.
+pub type Shape = (Vec<Point3<f64>>, Vec<[u32; 3]>);
+
+/// `Mesh(vertices, faces)`'s arguments, as `__reduce__` returns them.
+type MeshArgs<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<i64>>);
+
+/// Shape (n, 3), or an empty array (left to the core to report as an empty mesh).
+fn rows_of_three(shape: &[usize], len: usize) -> bool {
+    (shape.len() == 2 && shape[1] == 3) || (len == 0 && shape.len() <= 2)
+}
+
+/// Vertices (N, 3) and faces (M, 3) from any array-likes.
+fn mesh_arrays(vertices: &Bound<'_, PyAny>, faces: &Bound<'_, PyAny>) -> PyResult<Shape> {
+    let mesh_err = |e: PyErr| MeshError::new_err(e.value(vertices.py()).to_string());
+    let v = floats(vertices, "vertices").map_err(mesh_err)?;
+    if !rows_of_three(&v.shape, v.values.len()) {
+        return Err(MeshError::new_err(format!(
+            "vertices: expected shape (N, 3), got shape {}",
+            shape_str(&v.shape)
+        )));
+    }
+    let f = floats(faces, "faces").map_err(mesh_err)?;
+    if !rows_of_three(&f.shape, f.values.len()) {
+        return Err(MeshError::new_err(format!(
+            "faces: expected shape (M, 3) of vertex indices, got shape {}",
+            shape_str(&f.shape)
+        )));
+    }
+    let mut triangles = Vec::with_capacity(f.values.len() / 3);
+    for (k, t) in f.values.chunks_exact(3).enumerate() {
+        let mut tri = [0u32; 3];
+        for (slot, &x) in tri.iter_mut().zip(t) {
+            if !(x >= 0.0 && x <= u32::MAX as f64 && x.fract() == 0.0) {
+                return Err(MeshError::new_err(format!(
+                    "faces[{k}]: {x} is not a vertex index (a non-negative integer)"
+                )));
+            }
+            *slot = x as u32;
+        }
+        triangles.push(tri);
+    }
+    let points = v.values.chunks_exact(3).map(Point3::from_slice).collect();
+    Ok((points, triangles))
+}
+
+/// The scale factors of `Mesh.scaled`: one number for all three axes, or three.
+fn scale_factors(factor: &Bound<'_, PyAny>) -> PyResult<Vector3<f64>> {
+    if let Ok(f) = factor.extract::<f64>() {
+        return Ok(Vector3::repeat(f));
+    }
+    convert::vector3(factor, "factor")
+}
+
+/// A closed triangle mesh, validated and prepared for buoyancy queries.
+///
+/// Parameters
+/// ----------
+/// vertices : array_like, shape (N, 3)
+///     Vertex positions in the mesh frame, metres (any numeric dtype; converted to float64).
+/// faces : array_like, shape (M, 3)
+///     Triangles as zero-based vertex indices (any integer dtype, or integral floats), wound
+///     counter-clockwise seen from outside. All-inward winding is detected and flipped.
+///
+/// Raises
+/// ------
+/// MeshError
+///     (a ``ValueError``) if the arrays have the wrong shape, or the triangles are not a closed,
+///     consistently oriented 2-manifold enclosing a volume; the message names the vertex,
+///     triangle or edge at fault.
+///
+/// Examples
+/// --------
+/// >>> import buoyancy
+/// >>> v = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+/// >>> f = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
+/// >>> tet = buoyancy.Mesh(v, f)
+/// >>> tet
+/// Mesh(n_vertices=4, n_triangles=4, volume=0.166667, centroid=[0.25, 0.25, 0.25])
+/// >>> buoyancy.Mesh(v, f[:3])
+/// Traceback (most recent call last):
+/// ...
+/// buoyancy.MeshError: ...
+///
+/// ``Mesh`` is immutable and safe to share between threads; it compares (and hashes) by value,
+/// its vertices as given and its faces, and pickles. Its array attributes are read-only.
+#[pyclass(frozen, eq, module = "buoyancy", name = "Mesh")]
+pub struct PyMesh {
+    inner: buoyancy_core::Mesh<f64>,
+    /// The vertices as given (for `vertices`, equality and pickling, bit for bit).
+    vertices: Vec<Point3<f64>>,
+    /// The hash of `vertices` and the faces, computed on first use.
+    hash: OnceLock<u64>,
+}
+
+/// Two meshes are equal when their vertices (as given) and their faces (as given) are.
+impl PartialEq for PyMesh {
+    fn eq(&self, other: &Self) -> bool {
+        self.vertices == other.vertices
+            && self.inner.was_reoriented() == other.inner.was_reoriented()
+            && self.inner.triangles() == other.inner.triangles()
+    }
+}
+
+impl PyMesh {
+    fn new(inner: buoyancy_core::Mesh<f64>, vertices: Vec<Point3<f64>>) -> Self {
+        PyMesh {
+            inner,
+            vertices,
+            hash: OnceLock::new(),
+        }
+    }
+
+    /// A mesh validated and prepared by the core from vertices and triangles.
+    pub fn build(py: Python<'_>, (vertices, triangles): Shape) -> PyResult<Self> {
+        let kept = vertices.clone();
+        let inner = detach_if_large(py, triangles.len(), move || {
+            buoyancy_core::Mesh::new(vertices, triangles)
+        })
+        .map_err(|e| to_py(e, None))?;
+        Ok(PyMesh::new(inner, kept))
+    }
+
+    /// This mesh mapped by `map`, the core's transform by the affine `matrix`; errors are
+    /// prefixed with `argument`.
+    fn mapped(
+        &self,
+        py: Python<'_>,
+        matrix: &Matrix4<f64>,
+        argument: &str,
+        map: impl Send + FnOnce(&buoyancy_core::Mesh<f64>) -> Result<buoyancy_core::Mesh<f64>, Error>,
+    ) -> PyResult<Self> {
+        let mesh = &self.inner;
+        let inner = detach_if_large(py, mesh.triangle_count(), move || map(mesh))
+            .map_err(|e| to_py(e, Some(argument)))?;
+        // The vertices the core built the new mesh from, so that pickling the result rebuilds it
+        // bit for bit.
+        let vertices = (0..mesh.vertex_count())
+            .map(|i| matrix.transform_point(&mesh.vertex(i)))
+            .collect();
+        Ok(PyMesh::new(inner, vertices))
+    }
+
+    fn pose(
+        position: Option<&Bound<'_, PyAny>>,
+        rotation: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Pose<f64>> {
+        let t = match given(position) {
+            Some(p) => convert::vector3(p, "position")?,
+            None => Vector3::zeros(),
+        };
+        let r = match given(rotation) {
+            Some(r) => convert::rotation(r, "rotation")?,
+            None => UnitQuaternion::identity(),
+        };
+        Ok(Pose::from_parts(Translation3::from(t), r))
+    }
+
+    /// The `water` argument, default `Water()`.
+    fn water(water: Option<&Bound<'_, PyAny>>) -> PyResult<buoyancy_core::Water<f64>> {
+        Ok(convert::instance::<PyWater>(water, "water")?
+            .map_or_else(buoyancy_core::Water::default, |w| w.get().inner))
+    }
+
+    /// Faces as int64, outward, or as given (`original`: flipped back if reoriented).
+    fn faces_array<'py>(&self, py: Python<'py>, original: bool) -> Bound<'py, PyArray2<i64>> {
+        let flip = original && self.inner.was_reoriented();
+        arrays::rows3(
+            py,
+            self.inner.triangles().iter().map(|t| {
+                let t = if flip { [t[0], t[2], t[1]] } else { *t };
+                t.map(i64::from)
+            }),
+        )
+    }
+}
+
+#[pymethods]
+impl PyMesh {
+    #[new]
+    #[pyo3(text_signature = "(vertices, faces)")]
+    fn py_new(
+        py: Python<'_>,
+        vertices: &Bound<'_, PyAny>,
+        faces: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        let shape = mesh_arrays(vertices, faces)?;
+        PyMesh::build(py, shape)
+    }
+
+    /// Builds a mesh from a ``trimesh.Trimesh`` (or any object with ``vertices`` and ``faces``),
+    /// or from a ``trimesh.Scene``: its geometry concatenated, each part placed by the scene's
+    /// transforms (``scene.to_geometry()``), which must together be closed.
+    ///
+    /// >>> import trimesh  # doctest: +SKIP
+    /// >>> buoyancy.Mesh.from_trimesh(trimesh.creation.box())  # doctest: +SKIP
+    /// Mesh(n_vertices=8, n_triangles=12, volume=1, centroid=[0, 0, 0])
+    /// >>> from types import SimpleNamespace
+    /// >>> tet = SimpleNamespace(
+    /// ...     vertices=[(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)],
+    /// ...     faces=[(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)],
+    /// ... )
+    /// >>> buoyancy.Mesh.from_trimesh(tet)
+    /// Mesh(n_vertices=4, n_triangles=4, volume=0.166667, centroid=[0.25, 0.25, 0.25])
+    ///
+    /// Raises ``TypeError`` naming ``obj`` for anything else.
+    #[classmethod]
+    fn from_trimesh<'py>(
+        cls: &Bound<'py, PyType>,
+        obj: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        const EXPECTED: &str =
+            "a trimesh.Trimesh or trimesh.Scene (an object with vertices and faces arrays)";
+        let geometry = if obj.hasattr("faces")? {
+            obj.clone()
+        } else if obj.hasattr("to_geometry")? {
+            obj.call_method0("to_geometry")?
+        } else {
+            return Err(type_error("obj", EXPECTED, obj));
+        };
+        if !(geometry.hasattr("vertices")? && geometry.hasattr("faces")?) {
+            return Err(type_error(
+                "obj",
+                format!("{EXPECTED}; the scene's geometry has no faces"),
+                &geometry,
+            ));
+        }
+        cls.call1((geometry.getattr("vertices")?, geometry.getattr("faces")?))
+    }
+
+    /// Enclosed volume, m³ (positive).
+    #[getter]
+    fn volume(&self) -> f64 {
+        self.inner.volume()
+    }
+
+    /// Centroid of the enclosed volume (center of mass of a uniform body), mesh frame, shape (3,)
+    /// (a new, read-only array).
+    #[getter]
+    fn centroid<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        arrays::vector(py, self.inner.centroid().coords.as_slice())
+    }
+
+    /// Number of vertices.
+    #[getter]
+    fn n_vertices(&self) -> usize {
+        self.inner.vertex_count()
+    }
+
+    /// Number of triangles.
+    #[getter]
+    fn n_triangles(&self) -> usize {
+        self.inner.triangle_count()
+    }
+
+    /// Largest distance of a vertex from the centroid, m.
+    #[getter]
+    fn bounding_radius(&self) -> f64 {
+        self.inner.bounding_radius()
+    }
+
+    /// Whether the faces were wound inward and have all been flipped.
+    #[getter]
+    fn was_reoriented(&self) -> bool {
+        self.inner.was_reoriented()
+    }
+
+    /// The vertices as given, shape (N, 3), float64 (a new, read-only array).
+    #[getter]
+    fn vertices<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        arrays::rows3(py, self.vertices.iter().map(|p| [p.x, p.y, p.z]))
+    }
+
+    /// The triangles wound outward (flipped if ``was_reoriented``), shape (M, 3), int64 (a new,
+    /// read-only array).
+    #[getter]
+    fn faces<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i64>> {
+        self.faces_array(py, false)
+    }
+
+    /// The buoyancy of the mesh at one pose.
+    ///
+    /// Parameters
+    /// ----------
+    /// position : array_like, shape (3,)
+    ///     Translation of the mesh frame in the world frame, m: ``x_world = R @ x_mesh + position``.
+    /// rotation : array_like, shape (4,) or (3, 3), optional
+    ///     Quaternion ``(x, y, z, w)`` (scipy's order) or rotation matrix; ``None`` for identity.
+    ///     A quaternion must have norm 1 within 1e-5 (it is then normalised); a matrix must be
+    ///     orthonormal within 1e-5 with determinant +1. Anything else raises ``ValueError``.
+    /// water : Water, optional
+    ///     Default ``Water()``: fresh water, y up, surface at y = 0.
+    /// method : str
+    ///     ``"fast"``, ``"improved"``, ``"exact"`` (default), ``"fast_surface"`` or
+    ///     ``"exact_surface"``, in any case, with ``_``, ``-`` or nothing between the words
+    ///     (``"ExactSurface"``, the Rust name, works too).
+    /// traversal : str
+    ///     ``"auto"`` (default), ``"scan"`` or ``"hierarchy"``: visit every triangle, or only the
+    ///     nodes of the mesh's bounding-volume hierarchy that the surface crosses.
+    ///     ``"auto"`` takes the hierarchy from 128 triangles up.
+    ///     All give the same result up to round-off.
+    /// about : array_like, shape (3,), optional
+    ///     World point the torque is taken about; default the body's center of mass (the mesh
+    ///     centroid moved by the pose).
+    ///
+    /// Returns
+    /// -------
+    /// Buoyancy
+    ///
+    /// Examples
+    /// --------
+    /// >>> cube = buoyancy.shapes.cube()            # unit cube about the origin
+    /// >>> b = cube.buoyancy(position=(0, -0.25, 0))
+    /// >>> round(b.volume, 12), b.force.round(6).tolist()
+    /// (0.75, [0.0, 7357.5, 0.0])
+    /// >>> cube.buoyancy(position=(0, -0.25, 0), method="ExactSurface").method
+    /// 'exact_surface'
+    #[pyo3(
+        signature = (position=None, rotation=None, water=None, method=None, about=None, traversal=None),
+        text_signature = "(self, position=(0, 0, 0), rotation=None, water=None, method='exact', about=None, traversal='auto')"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn buoyancy(
+        &self,
+        py: Python<'_>,
+        position: Option<&Bound<'_, PyAny>>,
+        rotation: Option<&Bound<'_, PyAny>>,
+        water: Option<&Bound<'_, PyAny>>,
+        method: Option<&Bound<'_, PyAny>>,
+        about: Option<&Bound<'_, PyAny>>,
+        traversal: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyBuoyancy> {
+        let method = convert::method(method)?;
+        let traversal = convert::traversal(traversal)?;
+        let pose = PyMesh::pose(position, rotation)?;
+        let about = match given(about) {
+            Some(a) => Some(Point3::from(convert::vector3(a, "about")?)),
+            None => None,
+        };
+        let water = PyMesh::water(water)?;
+        let mesh = &self.inner;
+        let b = detach_if_large(py, mesh.triangle_count(), move || {
+            let b = mesh.buoyancy_with(&pose, &water, method, traversal)?;
+            Ok::<_, Error>(match about {
+                Some(q) => b.about(&q),
+                None => b,
+            })
+        })
+        .map_err(|e| to_py(e, None))?;
+        Ok(PyBuoyancy {
+            row: Row::new(&b),
+            method,
+        })
+    }
+
+    /// The buoyancy of the mesh at K poses, computed in parallel without the interpreter lock.
+    ///
+    /// Parameters
+    /// ----------
+    /// positions : array_like, shape (K, 3)
+    /// rotations : array_like, shape (K, 4) or (K, 3, 3), or None
+    ///     Quaternions ``(x, y, z, w)`` or rotation matrices, checked as in :meth:`buoyancy`;
+    ///     ``None`` for no rotation.
+    /// water : Water, optional
+    /// method : str
+    ///     As in :meth:`buoyancy`.
+    /// about : array_like, shape (3,) or (K, 3), optional
+    ///     One world point, or one per pose, for the torques; default each pose's center of mass.
+    /// threads : int, optional
+    ///     Run on a pool of this many threads (kept for later calls); default rayon's global
+    ///     pool (``RAYON_NUM_THREADS``, else one thread per core).
+    /// traversal : str
+    ///     ``"auto"`` (default), ``"scan"`` or ``"hierarchy"``, as in :meth:`buoyancy`.
+    ///
+    /// Returns
+    /// -------
+    /// BuoyancyBatch
+    ///     Read-only arrays ``volume`` (K,), ``center``, ``force``, ``torque`` (K, 3); pose ``k``
+    ///     gives exactly what ``buoyancy(positions[k], rotations[k], ...)`` gives.
+    ///
+    /// Examples
+    /// --------
+    /// >>> cube = buoyancy.shapes.cube()
+    /// >>> heights = np.linspace(-1, 1, 5)
+    /// >>> batch = cube.buoyancy_batch(np.c_[0 * heights, heights, 0 * heights], None)
+    /// >>> batch.volume.round(12).tolist()
+    /// [1.0, 1.0, 0.5, 0.0, 0.0]
+    #[pyo3(
+        signature = (positions, rotations=None, water=None, method=None, about=None, threads=None, traversal=None),
+        text_signature = "(self, positions, rotations, water=None, method='exact', about=None, threads=None, traversal='auto')"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn buoyancy_batch(
+        &self,
+        py: Python<'_>,
+        positions: &Bound<'_, PyAny>,
+        rotations: Option<&Bound<'_, PyAny>>,
+        water: Option<&Bound<'_, PyAny>>,
+        method: Option<&Bound<'_, PyAny>>,
+        about: Option<&Bound<'_, PyAny>>,
+        threads: Option<&Bound<'_, PyAny>>,
+        traversal: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyBuoyancyBatch> {
+        let method = convert::method(method)?;
+        let traversal = convert::traversal(traversal)?;
+        let translations = convert::rows3(positions, "positions")?;
+        let k = translations.len();
+        let rotations = match given(rotations) {
+            Some(r) => {
+                let r = convert::rotations(r, "rotations")?;
+                if r.len() != k {
+                    return Err(arg_error(
+                        "rotations",
+                        format!("has {} rotations for {k} positions", r.len()),
+                    ));
+                }
+                r
+            }
+            None => vec![UnitQuaternion::identity(); k],
+        };
+        let about = About::parse(about, k)?;
+        let pool = given(threads)
+            .map(|t| threads::pool(convert::count(t, "threads")?))
+            .transpose()?;
+        let batch = Batch {
+            mesh: &self.inner,
+            poses: translations
+                .into_iter()
+                .zip(rotations)
+                .map(|(t, r)| Pose::from_parts(Translation3::from(t), r))
+                .collect(),
+            water: PyMesh::water(water)?,
+            method,
+            traversal,
+            about,
+        };
+        let rows = py
+            .detach(|| batch.run(pool.as_deref()))
+            .map_err(|(i, e)| to_py(e, Some(&format!("pose {i}"))))?;
+        Ok(PyBuoyancyBatch::new(py, rows, method))
+    }
+
+    /// The hydrodynamic damping of the mesh at one pose and velocity: pressure drag on the wetted
+    /// surface plus angular damping (see :class:`DampingCoefficients` for the model). Zero when
+    /// dry or at rest relative to the water.
+    ///
+    /// Parameters
+    /// ----------
+    /// position, rotation : array_like, optional
+    ///     The pose, as in :meth:`buoyancy`.
+    /// linear_velocity : array_like, shape (3,)
+    ///     Velocity of the body's center of mass (the mesh centroid moved by the pose), world
+    ///     frame, m/s; default zero.
+    /// angular_velocity : array_like, shape (3,)
+    ///     Angular velocity, world frame, rad/s; default zero.
+    /// water : Water, optional
+    ///     Default ``Water()``.
+    /// coefficients : DampingCoefficients, optional
+    ///     Default ``DampingCoefficients()``.
+    /// about : array_like, shape (3,), optional
+    ///     World point the torque is taken about; default the body's center of mass.
+    ///
+    /// Returns
+    /// -------
+    /// Damping
+    ///
+    /// The model is explicit: a simulation applying it over a step ``dt`` should keep the impulse
+    /// ``|force| * dt`` below the momentum it damps (``buoyancy.rapier`` clamps it so).
+    ///
+    /// Examples
+    /// --------
+    /// A unit cube under water sinking at 2 m/s: only its bottom face (1 m²) faces the flow,
+    /// and feels ``1000 * 2 + 0.5 * 1000 * 1 * 2**2 = 4000`` Pa.
+    ///
+    /// >>> cube = buoyancy.shapes.cube()
+    /// >>> d = cube.damping(position=(0, -3, 0), linear_velocity=(0, -2, 0))
+    /// >>> d.force.round(9).tolist(), d.wetted_area
+    /// ([0.0, 4000.0, 0.0], 6.0)
+    /// >>> cube.damping(position=(0, 2, 0), linear_velocity=(0, -2, 0)).force.tolist()  # dry
+    /// [0.0, 0.0, 0.0]
+    #[pyo3(
+        signature = (position=None, rotation=None, linear_velocity=None, angular_velocity=None, water=None, coefficients=None, about=None),
+        text_signature = "(self, position=(0, 0, 0), rotation=None, linear_velocity=(0, 0, 0), angular_velocity=(0, 0, 0), water=None, coefficients=None, about=None)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn damping(
+        &self,
+        py: Python<'_>,
+        position: Option<&Bound<'_, PyAny>>,
+        rotation: Option<&Bound<'_, PyAny>>,
+        linear_velocity: Option<&Bound<'_, PyAny>>,
+        angular_velocity: Option<&Bound<'_, PyAny>>,
+        water: Option<&Bound<'_, PyAny>>,
+        coefficients: Option<&Bound<'_, PyAny>>,
+        about: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyDamping> {
+        let pose = PyMesh::pose(position, rotation)?;
+        let velocity = |v: Option<&Bound<'_, PyAny>>, name: &str| match given(v) {
+            Some(v) => convert::vector3(v, name),
+            None => Ok(Vector3::zeros()),
+        };
+        let linear_velocity = velocity(linear_velocity, "linear_velocity")?;
+        let angular_velocity = velocity(angular_velocity, "angular_velocity")?;
+        let about = match given(about) {
+            Some(a) => Some(convert::vector3(a, "about")?),
+            None => None,
+        };
+        let water = PyMesh::water(water)?;
+        let coefficients =
+            convert::instance::<PyDampingCoefficients>(coefficients, "coefficients")?
+                .map_or_else(buoyancy_core::DampingCoefficients::default, |c| {
+                    c.get().inner
+                });
+        let mesh = &self.inner;
+        let d = detach_if_large(py, mesh.triangle_count(), move || {
+            mesh.damping(
+                &pose,
+                &linear_velocity,
+                &angular_velocity,
+                &water,
+                &coefficients,
+            )
+        })
+        .map_err(|e| to_py(e, None))?;
+        Ok(PyDamping::new(&d, about))
+    }
+
+    /// A copy of the mesh with every vertex mapped by an affine transform, mesh frame:
+    /// ``x' = A @ x + b`` for ``matrix = [[A, b], [0, 0, 0, 1]]``.
+    ///
+    /// Parameters
+    /// ----------
+    /// matrix : array_like, shape (4, 4)
+    ///     The homogeneous matrix, finite, its last row ``[0, 0, 0, 1]``. A mirroring map
+    ///     (``det A < 0``) keeps the faces wound outward.
+    ///
+    /// Returns
+    /// -------
+    /// Mesh
+    ///     Validated and prepared like any new mesh.
+    ///
+    /// Raises ``ValueError`` naming ``matrix`` if it is not such a matrix, ``MeshError`` if it is
+    /// singular (it flattens the mesh).
+    ///
+    /// Examples
+    /// --------
+    /// >>> m = np.eye(4)
+    /// >>> m[:3, :3] = np.diag([2.0, 0.5, 1.0])  # stretch along x, squash along y
+    /// >>> m[:3, 3] = (0, 3, 0)                   # then move up 3 m
+    /// >>> slab = buoyancy.shapes.cube().transformed(m)
+    /// >>> round(slab.volume, 12), slab.centroid.round(12).tolist()
+    /// (1.0, [0.0, 3.0, 0.0])
+    #[pyo3(text_signature = "(self, matrix)")]
+    fn transformed(&self, py: Python<'_>, matrix: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let m = convert::matrix4(matrix, "matrix")?;
+        self.mapped(py, &m, "matrix", move |mesh| mesh.transformed(&m))
+    }
+
+    /// A copy of the mesh scaled about the origin of the mesh frame.
+    ///
+    /// Parameters
+    /// ----------
+    /// factor : float or array_like, shape (3,)
+    ///     One factor for all three axes, or one per axis; finite and non-zero. A negative factor
+    ///     mirrors the mesh (its faces stay wound outward).
+    ///
+    /// Returns
+    /// -------
+    /// Mesh
+    ///
+    /// Examples
+    /// --------
+    /// >>> cube = buoyancy.shapes.cube()
+    /// >>> round(cube.scaled(2).volume, 12), round(cube.scaled((1, 2, 3)).volume, 12)
+    /// (8.0, 6.0)
+    #[pyo3(text_signature = "(self, factor)")]
+    fn scaled(&self, py: Python<'_>, factor: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let factors = scale_factors(factor)?;
+        let m = Matrix4::new_nonuniform_scaling(&factors);
+        self.mapped(py, &m, "factor", move |mesh| mesh.scaled(&factors))
+    }
+
+    /// A copy of the mesh moved by ``offset``, mesh frame, m.
+    ///
+    /// Parameters
+    /// ----------
+    /// offset : array_like, shape (3,)
+    ///     Finite.
+    ///
+    /// Returns
+    /// -------
+    /// Mesh
+    ///
+    /// Examples
+    /// --------
+    /// >>> buoyancy.shapes.cube().translated((0, 0.5, 0)).centroid.round(12).tolist()
+    /// [0.0, 0.5, 0.0]
+    #[pyo3(text_signature = "(self, offset)")]
+    fn translated(&self, py: Python<'_>, offset: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let offset = convert::vector3(offset, "offset")?;
+        let m = Matrix4::new_translation(&offset);
+        self.mapped(py, &m, "offset", move |mesh| mesh.translated(&offset))
+    }
+
+    fn __repr__(&self) -> String {
+        let c = self.inner.centroid();
+        format!(
+            "Mesh(n_vertices={}, n_triangles={}, volume={}, centroid={})",
+            self.inner.vertex_count(),
+            self.inner.triangle_count(),
+            g(self.inner.volume()),
+            g3(&[c.x, c.y, c.z])
+        )
+    }
+
+    /// The hash of the vertices (as given) and the faces, consistent with ``==``.
+    fn __hash__(&self) -> u64 {
+        *self.hash.get_or_init(|| {
+            let mut h = DefaultHasher::new();
+            for p in &self.vertices {
+                // `+ 0.0` makes -0.0 hash as 0.0, which it equals.
+                for x in [p.x, p.y, p.z] {
+                    (x + 0.0).to_bits().hash(&mut h);
+                }
+            }
+            self.inner.was_reoriented().hash(&mut h);
+            self.inner.triangles().hash(&mut h);
+            h.finish()
+        })
+    }
+
+    /// Pickles as the vertices and faces as given: unpickling validates again and gives a
+    /// mesh with bit-identical results.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, MeshArgs<'py>) {
+        let py = slf.py();
+        let this = slf.get();
+        (
+            slf.get_type(),
+            (this.vertices(py), this.faces_array(py, true)),
+        )
+    }
+}
