@@ -65,6 +65,7 @@ from typing import Any
 import numpy as np
 
 import buoyancy
+from buoyancy._sample_meshes import find_sample_mesh, not_found_message
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 UP = np.array([0.0, 1.0, 0.0])
@@ -121,21 +122,15 @@ def numpy_clip(triangles: np.ndarray, normal: np.ndarray, level: float) -> tuple
 # Meshes and poses.
 
 
-def meshes_dir() -> pathlib.Path:
-    env = os.environ.get("BUOYANCY_MESHES")
-    return pathlib.Path(env) if env else REPO.parent / "shared" / "meshes"
-
-
 def models() -> list[tuple[str, buoyancy.Mesh]]:
     out = []
-    folder = meshes_dir()
     for name in ("torusknot", "bunny", "armadillo"):
-        path = folder / f"{name}.obj"
-        if path.is_file():
+        path = find_sample_mesh(f"{name}.obj", REPO)
+        if path is not None:
             mesh = buoyancy.load(path)
             out.append((f"{name} {mesh.n_triangles:,}", mesh))
         else:
-            print(f"note: {path} not found (set BUOYANCY_MESHES); skipping {name}")
+            print(f"note: {not_found_message(REPO, f'{name}.obj')}; skipping {name}")
     torus = buoyancy.shapes.torus(1.0, 0.25, 200, 75)
     out.append((f"torus {torus.n_triangles:,} (procedural)", torus))
     return out

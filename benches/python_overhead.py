@@ -21,6 +21,7 @@ import timeit
 import numpy as np
 
 import buoyancy
+from buoyancy._sample_meshes import find_sample_mesh, not_found_message
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 
@@ -55,11 +56,11 @@ def main() -> int:
     for name, f in cases.items():
         print(f"| `{name}` | {best_per_call(f, 20_000, args.repeat) * 1e6:.2f} |")
 
-    meshes = pathlib.Path(os.environ.get("BUOYANCY_MESHES", REPO.parent / "shared" / "meshes"))
-    if (meshes / "bunny.obj").exists():
-        mesh, name = buoyancy.load(meshes / "bunny.obj"), "bunny"
+    bunny = find_sample_mesh("bunny.obj", REPO)
+    if bunny is not None:
+        mesh, name = buoyancy.load(bunny), "bunny"
     else:
-        print(f"\nnote: {meshes / 'bunny.obj'} not found; using a procedural torus knot instead")
+        print(f"\nnote: {not_found_message(REPO, 'bunny.obj')}; using a procedural torus knot instead")
         mesh, name = buoyancy.shapes.torus_knot(segments=250, sides=10), "torus knot"
     rng = np.random.default_rng(1)
     k = args.poses

@@ -14,7 +14,6 @@ both bodies settle within 1% of theory.
 from __future__ import annotations
 
 import argparse
-import os
 import pathlib
 from dataclasses import dataclass
 
@@ -22,29 +21,19 @@ import numpy as np
 import rapier3d
 
 import buoyancy
+from buoyancy._sample_meshes import find_sample_mesh, not_found_message
 from buoyancy.rapier import FloatingBodies
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 WATER_DENSITY = 1000.0
 
 
-def bunny_path() -> pathlib.Path | None:
-    """``$BUOYANCY_MESHES/bunny.obj``, else ``../shared/meshes/bunny.obj`` beside the repo."""
-    env = os.environ.get("BUOYANCY_MESHES")
-    folder = pathlib.Path(env) if env else REPO.parent / "shared" / "meshes"
-    path = folder / "bunny.obj"
-    return path if path.is_file() else None
-
-
 def first_body() -> tuple[str, buoyancy.Mesh, str | None]:
     """The bunny scaled to about 1 m long, or a torus knot; and a note if it is the knot."""
-    path = bunny_path()
+    path = find_sample_mesh("bunny.obj", REPO)
     if path is None:
         knot = buoyancy.shapes.torus_knot(radius=0.4, tube_radius=0.12, segments=120, sides=12)
-        note = (
-            "note: bunny.obj not found in $BUOYANCY_MESHES or ../shared/meshes beside the "
-            "repository; floating a procedural torus knot instead"
-        )
+        note = f"note: {not_found_message(REPO, 'bunny.obj')}; floating a procedural torus knot instead"
         return "torus knot", knot, note
     raw = buoyancy.load(path)
     size = float(np.ptp(raw.vertices, axis=0).max())

@@ -1,4 +1,4 @@
-"""Shared fixtures: the test meshes beside the repository, and a seeded random generator."""
+"""Shared fixtures: the sample meshes beside the repository, and a seeded random generator."""
 
 from __future__ import annotations
 
@@ -9,31 +9,26 @@ import numpy as np
 import pytest
 
 import buoyancy
+from buoyancy._sample_meshes import not_found_message, sample_meshes_dir
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 
 
-def meshes_dir() -> pathlib.Path | None:
-    """``$BUOYANCY_MESHES``, else ``../shared/meshes`` beside the repository, if it exists."""
-    env = os.environ.get("BUOYANCY_MESHES")
-    path = pathlib.Path(env) if env else REPO.parent / "shared" / "meshes"
-    return path if path.is_dir() else None
-
-
-@pytest.fixture(scope="session")
-def shared_meshes() -> pathlib.Path:
-    path = meshes_dir()
-    if path is None:
-        pytest.skip(
-            "test meshes not found in $BUOYANCY_MESHES or ../shared/meshes beside the repository; "
-            "the procedural meshes are still tested"
-        )
+def require_sample_mesh(name: str) -> pathlib.Path:
+    """The path of the sample mesh ``name``. When it is missing, the test that needs it fails
+    under ``CI=true`` (a CI run must test them) and skips otherwise, saying where it looked."""
+    path = sample_meshes_dir(REPO) / name
+    if not path.is_file():
+        message = not_found_message(REPO, name)
+        if os.environ.get("CI") == "true":
+            pytest.fail(f"{message}; CI=true, so the tests that need it fail", pytrace=False)
+        pytest.skip(f"{message}; the procedural meshes are still tested")
     return path
 
 
 @pytest.fixture(scope="session")
-def bunny(shared_meshes: pathlib.Path) -> buoyancy.Mesh:
-    return buoyancy.load(shared_meshes / "bunny.obj")
+def bunny() -> buoyancy.Mesh:
+    return buoyancy.load(require_sample_mesh("bunny.obj"))
 
 
 @pytest.fixture

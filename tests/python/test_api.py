@@ -13,7 +13,8 @@ import pytest
 
 import buoyancy
 from buoyancy import shapes
-from conftest import REPO, quaternion_matrix, random_quaternions
+from buoyancy._sample_meshes import sample_meshes_dir
+from conftest import REPO, quaternion_matrix, random_quaternions, require_sample_mesh
 
 TET_V = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
 TET_F = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
@@ -192,12 +193,31 @@ def test_load_obj_and_stl(tmp_path: pathlib.Path) -> None:
     assert binary.volume == pytest.approx(knot.volume, rel=1e-5)
 
 
-def test_shared_meshes(shared_meshes: pathlib.Path) -> None:
-    armadillo = buoyancy.load(shared_meshes / "armadillo.obj")
+def test_sample_meshes() -> None:
+    armadillo = buoyancy.load(require_sample_mesh("armadillo.obj"))
     assert armadillo.was_reoriented and armadillo.volume == pytest.approx(1.902, rel=1e-3)
-    bunny = buoyancy.load(shared_meshes / "bunny.obj")
+    bunny = buoyancy.load(require_sample_mesh("bunny.obj"))
     assert (bunny.n_vertices, bunny.n_triangles) == (2503, 5002)
     assert bunny.volume == pytest.approx(749.38, rel=1e-4)
+
+
+def test_missing_sample_meshes_fail_under_ci_and_skip_otherwise(
+    tmp_path: pathlib.Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setenv("BUOYANCY_MESHES", str(tmp_path / "nowhere"))
+    monkeypatch.setenv("CI", "true")
+    with pytest.raises(pytest.fail.Exception, match=r"bunny.obj not found in .*nowhere .*BUOYANCY_MESHES.*CI=true"):
+        require_sample_mesh("bunny.obj")
+    monkeypatch.delenv("CI")
+    with pytest.raises(pytest.skip.Exception, match=r"bunny.obj not found in .*nowhere"):
+        require_sample_mesh("bunny.obj")
+    # The folder named by $BUOYANCY_MESHES is the one used.
+    (tmp_path / "nowhere").mkdir()
+    (tmp_path / "nowhere" / "bunny.obj").write_text(obj_text(buoyancy.Mesh(TET_V, TET_F)))
+    assert require_sample_mesh("bunny.obj") == tmp_path / "nowhere" / "bunny.obj"
+    # Without it, ../shared/meshes beside the repository.
+    monkeypatch.delenv("BUOYANCY_MESHES")
+    assert sample_meshes_dir(REPO) == REPO.parent / "shared" / "meshes"
 
 
 class FakeTrimesh:
@@ -401,6 +421,7 @@ def test_docstring_examples() -> None:
     objects = {
         "buoyancy": buoyancy,
         "buoyancy.shapes": buoyancy.shapes,
+        "buoyancy._sample_meshes": buoyancy._sample_meshes,
         "Mesh": buoyancy.Mesh,
         "Mesh.buoyancy": buoyancy.Mesh.buoyancy,
         "Mesh.buoyancy_batch": buoyancy.Mesh.buoyancy_batch,

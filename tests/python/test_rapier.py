@@ -12,7 +12,8 @@ import numpy as np
 import pytest
 
 import buoyancy
-from conftest import REPO, meshes_dir
+from buoyancy._sample_meshes import find_sample_mesh
+from conftest import REPO
 
 try:
     import rapier3d
@@ -39,7 +40,7 @@ def test_example_settles_within_one_percent_of_theory() -> None:
     example = load_example()
     results, note = example.run(seconds=30.0)
     assert [r.name for r in results][1] == "cube"
-    if meshes_dir() is not None:
+    if find_sample_mesh("bunny.obj", REPO) is not None:
         assert note is None and results[0].name == "bunny"
     else:
         assert note is not None and "torus knot" in note
