@@ -155,11 +155,20 @@ class _Body:
 
 def _water_for_gravity(gravity: npt.ArrayLike) -> Water:
     """Fresh water whose surface passes through the origin, up opposite to gravity (y up when
-    gravity is zero), with ``g = |gravity|``."""
-    g = np.asarray(gravity, dtype=np.float64).reshape(3)
-    norm = float(np.linalg.norm(g))
+    gravity is zero), with ``g = |gravity|``. A gravity that is not 3 finite numbers is a
+    ``ValueError`` naming it."""
+    try:
+        g = np.asarray(gravity, dtype=np.float64)
+    except (TypeError, ValueError) as error:
+        raise ValueError(f"gravity: expected 3 numbers, the gravity vector in m/s² ({error})") from None
+    if g.shape != (3,):
+        raise ValueError(f"gravity: expected 3 numbers, the gravity vector in m/s², got shape {g.shape}")
+    if not np.isfinite(g).all():
+        raise ValueError(f"gravity: has a NaN or infinite component: {tuple(g.tolist())}")
+    with np.errstate(over="ignore"):
+        norm = float(np.linalg.norm(g))
     if not math.isfinite(norm):
-        raise ValueError("gravity: has a NaN or infinite component")
+        raise ValueError(f"gravity: too large, its magnitude overflows: {tuple(g.tolist())}")
     if norm == 0.0:
         return Water(gravity=0.0)
     return Water(gravity=norm, normal=tuple(-g / norm))
@@ -211,7 +220,8 @@ class FloatingBodies:
         method: str = "exact",
         damping: DampingCoefficients | None = None,
     ) -> None:
-        self.water = _water_for_gravity(gravity) if water is None else water
+        world_water = _water_for_gravity(gravity)  # checks the gravity even when `water` is given
+        self.water = world_water if water is None else water
         self.method = method
         self.damping = DampingCoefficients() if damping is None else damping
         self._bodies: dict[Hashable, _Body] = {}

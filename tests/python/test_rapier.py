@@ -212,6 +212,30 @@ def test_bookkeeping_and_errors() -> None:
         FloatingBodies((0.0, float("nan"), 0.0))
 
 
+@pytest.mark.parametrize(
+    "gravity, match",
+    [
+        ((0.0, float("nan"), 0.0), r"^gravity: has a NaN or infinite component: \(0.0, nan, 0.0\)$"),
+        ((0.0, -float("inf"), 0.0), "^gravity: has a NaN or infinite component"),
+        ((1.5e308, 1.5e308, 0.0), "^gravity: too large, its magnitude overflows"),
+        ((0.0, -9.81), r"^gravity: expected 3 numbers, the gravity vector in m/s², got shape \(2,\)$"),
+        (-9.81, r"^gravity: expected 3 numbers, the gravity vector in m/s², got shape \(\)$"),
+        ("down", "^gravity: expected 3 numbers, the gravity vector in m/s²"),
+    ],
+)
+def test_invalid_gravity_is_a_value_error_naming_it(gravity: Any, match: str) -> None:
+    with pytest.raises(ValueError, match=match):
+        FloatingBodies(gravity)
+    # Even when the water is given, so that gravity is not used to build it.
+    with pytest.raises(ValueError, match=match):
+        FloatingBodies(gravity, water=buoyancy.Water())
+    world = rapier3d.PhysicsWorld(gravity=(0.0, -9.81, 0.0))
+    if np.shape(gravity) == (3,):  # a world's gravity is always a vector (of float32)
+        world.gravity = tuple(gravity)
+        with pytest.raises(ValueError, match="^gravity: "):
+            FloatingBodies.for_world(world)
+
+
 def test_module_docstring_example_runs() -> None:
     import textwrap
 
