@@ -162,11 +162,9 @@ impl core::error::Error for Error {}
 /// The message of [`Error::ZeroVolume`]: what the numbers say about the mesh, and what to check.
 fn write_zero_volume(f: &mut fmt::Formatter<'_>, volume: f64, scale: f64) -> fmt::Result {
     if !volume.is_finite() || !scale.is_finite() {
-        write!(
-            f,
-            "the mesh's volume overflowed (signed volume {volume} m³): its coordinates are too \
-             large for the computation; express them in larger units or move the mesh nearer \
-             the origin"
+        f.write_str(
+            "the mesh's volume overflowed: its coordinates are too large for the computation; \
+             express them in larger units or move the mesh nearer the origin",
         )
     } else if scale == 0.0 {
         f.write_str(
@@ -182,10 +180,10 @@ fn write_zero_volume(f: &mut fmt::Formatter<'_>, volume: f64, scale: f64) -> fmt
         }
         write!(
             f,
-            " m³, against {scale:.3e} m³ for its triangles' tetrahedra taken one by one: it is \
-             flat, or parts of it wound inward cancel parts wound outward; check that no \
-             coordinate was dropped or scaled to zero, and that every part is wound the same \
-             way (counter-clockwise seen from outside)"
+            " m³ where the tetrahedra of its triangles add up to {scale:.3e} m³ in absolute \
+             value: it is flat, or parts of it wound inward cancel parts wound outward; check \
+             that no coordinate was dropped or scaled to zero, and that every part is wound the \
+             same way (counter-clockwise seen from outside)"
         )
     }
 }

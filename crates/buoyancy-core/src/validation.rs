@@ -301,6 +301,9 @@ impl fmt::Display for MeshDefects {
             self.triangle_count,
             plural(self.triangle_count, "triangle", "triangles"),
         )?;
+        let bad_indices =
+            self.count(DefectKind::IndexOutOfRange) + self.count(DefectKind::RepeatedIndex);
+        let mut edges_noted = false;
         for defect in &self.defects {
             let n = defect.count;
             f.write_str("\n- ")?;
@@ -338,7 +341,7 @@ impl fmt::Display for MeshDefects {
                 )?,
                 DefectKind::InconsistentOrientation => write!(
                     f,
-                    "{n} inconsistently oriented {} (both triangles traverse it in the same \
+                    "{n} inconsistently oriented {} (its two triangles traverse it in the same \
                      direction, so one of them faces the wrong way)",
                     plural(n, "edge", "edges")
                 )?,
@@ -346,6 +349,13 @@ impl fmt::Display for MeshDefects {
             f.write_str(": ")?;
             write_list(f, &defect.examples, n)?;
             write!(f, ". Remedy: {}.", self.remedy(defect.kind))?;
+            if defect.kind >= DefectKind::OpenEdge && !edges_noted && bad_indices > 0 {
+                f.write_str(
+                    " Edges are checked without the triangles whose indices are reported above: \
+                     fixing those may close edges reported here.",
+                )?;
+                edges_noted = true;
+            }
         }
         Ok(())
     }
