@@ -404,7 +404,17 @@ def machine() -> list[str]:
         pass
     usable = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
     versions = []
-    for pkg in ("buoyancy", "numpy", "trimesh", "scipy", "shapely", "rtree", "mapbox-earcut", "networkx", "navaltoolbox"):
+    for pkg in (
+        "buoyancy",
+        "numpy",
+        "trimesh",
+        "scipy",
+        "shapely",
+        "rtree",
+        "mapbox-earcut",
+        "networkx",
+        "navaltoolbox",
+    ):
         try:
             versions.append(f"{pkg} {importlib.metadata.version(pkg)}")
         except importlib.metadata.PackageNotFoundError:
@@ -425,7 +435,9 @@ def load_average() -> str:
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--budget", type=float, default=2.0, help="seconds of repeated timing per implementation and mesh")
+    parser.add_argument(
+        "--budget", type=float, default=2.0, help="seconds of repeated timing per implementation and mesh"
+    )
     parser.add_argument("--out", type=pathlib.Path, default=REPO / "benches" / "PEERS.md")
     args = parser.parse_args()
 
@@ -513,7 +525,7 @@ def main() -> int:
         f"Written by `{command}` (see the top of `benches/peers.py` for the setup and what each row times).",
         "The paper's 100 poses on each mesh (tilted by Euler angles (0.3, 0.5, 0.2), water from 5% to 95% of",
         "the body's height); differences are from `buoyancy`'s `exact` at the same pose, the volume relative",
-        "to the body's volume, the center relative to its bounding radius. \"vs ours\" is the median time",
+        'to the body\'s volume, the center relative to its bounding radius. "vs ours" is the median time',
         "over `mesh.buoyancy`'s. One thread everywhere.",
         "",
         *[f"- {line}" for line in header],
@@ -539,8 +551,8 @@ def main() -> int:
     if ratios:
         worst = min(ratios.values())
         doc += [
-            f"Goal (issue 5, a figure, not a test): `exact` at least 500× faster than trimesh and navaltoolbox "
-            f"from Python on the ~30,000-triangle meshes. Measured: "
+            "Goal (issue 5, a figure, not a test): `exact` at least 500× faster than trimesh and navaltoolbox "
+            "from Python on the ~30,000-triangle meshes. Measured: "
             + "; ".join(f"{impl} on {mesh} {r:,.0f}×" for (mesh, impl), r in ratios.items())
             + f" ({'met' if worst >= 500 else 'not met'} in this run: the smallest is {worst:,.0f}×).",
             "",

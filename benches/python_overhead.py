@@ -47,7 +47,9 @@ def main() -> int:
         "cube.buoyancy(p) [tuple]": lambda: cube.buoyancy(p_tuple),
         "cube.buoyancy(p, q) [tuples]": lambda: cube.buoyancy(p_tuple, q_tuple),
         "cube.buoyancy(p, q) [numpy arrays]": lambda: cube.buoyancy(p_np, q_np),
-        "cube.buoyancy(p, q, water=w, method='exact')": lambda: cube.buoyancy(p_tuple, q_tuple, water=water, method="exact"),
+        "cube.buoyancy(p, q, water=w, method='exact')": lambda: cube.buoyancy(
+            p_tuple, q_tuple, water=water, method="exact"
+        ),
         "cube.buoyancy(p, q).force  [+ result array]": lambda: cube.buoyancy(p_tuple, q_tuple).force,
     }
     print("## Per call, 12-triangle cube (goal <= 3 µs)\n")
@@ -82,15 +84,19 @@ def main() -> int:
             if wall < best:
                 best, utilisation, cpu_used[threads] = wall, cpu / wall, cpu
         base = base or best
-        print(f"| {threads} | {best * 1e3:.1f} | {best / k * 1e6:.2f} | {base / best:.2f}x "
-              f"| {cpu_used[threads] * 1e3:.0f} | {utilisation:.2f} |")
+        print(
+            f"| {threads} | {best * 1e3:.1f} | {best / k * 1e6:.2f} | {base / best:.2f}x "
+            f"| {cpu_used[threads] * 1e3:.0f} | {utilisation:.2f} |"
+        )
     # On a machine shared with other work, the wall-clock speed-up is capped by the CPU share
     # this process gets. The CPU time tells the parallel overhead regardless: with the work
     # split evenly (rayon's work stealing), two idle cores give 2 × cpu(1) / cpu(2).
     print(f"\nspeed-up expected on 2 idle cores from the CPU times: {2 * cpu_used[1] / cpu_used[2]:.2f}x")
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
-    print(f"\n(load average over the last minute when done: {load:.2f} on {os.cpu_count()} CPUs; "
-          "a busy machine caps the speed-up)")
+    print(
+        f"\n(load average over the last minute when done: {load:.2f} on {os.cpu_count()} CPUs; "
+        "a busy machine caps the speed-up)"
+    )
     b = mesh.buoyancy_batch(positions, q)
     print(f"\n({int(np.sum(b.partially_submerged > 0))} of {k} poses cut by the surface)")
     return 0

@@ -126,13 +126,19 @@ def main() -> None:
     results, note = run(args.seconds)
     if note:
         print(note)
-    print(f"rapier3d {rapier3d._rapier3d.__version__}, buoyancy {buoyancy.__version__}: "
-          f"{args.seconds:g} s at 60 Hz, fresh water (1000 kg/m³)")
-    print(f"{'body':<11} {'density':>8} {'volume m³':>10} {'mass kg':>9} "
-          f"{'theory':>7} {'simulated':>9} {'error':>8} {'|v| m/s':>8}")
+    print(
+        f"rapier3d {rapier3d._rapier3d.__version__}, buoyancy {buoyancy.__version__}: "
+        f"{args.seconds:g} s at 60 Hz, fresh water (1000 kg/m³)"
+    )
+    print(
+        f"{'body':<11} {'density':>8} {'volume m³':>10} {'mass kg':>9} "
+        f"{'theory':>7} {'simulated':>9} {'error':>8} {'|v| m/s':>8}"
+    )
     for r in results:
-        print(f"{r.name:<11} {r.density:>8.0f} {r.volume:>10.5f} {r.mass:>9.3f} "
-              f"{r.theory:>7.5f} {r.simulated:>9.5f} {r.error:>+8.3%} {r.residual_speed:>8.1e}")
+        print(
+            f"{r.name:<11} {r.density:>8.0f} {r.volume:>10.5f} {r.mass:>9.3f} "
+            f"{r.theory:>7.5f} {r.simulated:>9.5f} {r.error:>+8.3%} {r.residual_speed:>8.1e}"
+        )
     print("theory: submerged fraction = mass / (ρ_water · volume) = relative density")
 
 

@@ -12,13 +12,14 @@ cargo test -p buoyancy-core --no-default-features --lib
 # Builds the examples and the benchmarks (never runs them).
 cargo build --workspace --all-targets --all-features
 
-echo "== Python: pip install . into a fresh .venv-test, then pytest"
+echo "== Python: pip install . into a fresh .venv-test, then pytest, the stubs and the linter"
 PYTHON="${PYTHON:-python3}"
 rm -rf .venv-test
 "$PYTHON" -m venv .venv-test
 VPY=.venv-test/bin/python
 "$VPY" -m pip install --quiet --upgrade pip
-"$VPY" -m pip install --quiet numpy pytest matplotlib
+# trimesh for Mesh.from_trimesh's tests; mypy (its stubtest) and ruff for the checks after pytest.
+"$VPY" -m pip install --quiet numpy pytest matplotlib trimesh mypy ruff
 # rapier's Python binding, for buoyancy.rapier (a prebuilt abi3 wheel); without it the rapier
 # tests skip, saying so.
 "$VPY" -m pip install --quiet 'rapier3d>=0.36.1' \
@@ -26,3 +27,8 @@ VPY=.venv-test/bin/python
 "$VPY" -m pip install --quiet .
 # From the tests folder's parent, so that `import buoyancy` is the installed wheel.
 "$VPY" -m pytest tests/python -q -p no:cacheprovider
+echo "== Python: the hand-written stubs (python/buoyancy/_core.pyi) against the compiled module"
+"$VPY" -m mypy.stubtest buoyancy._core
+echo "== Python: ruff (configured in pyproject.toml)"
+"$VPY" -m ruff check python tests/python benches examples
+"$VPY" -m ruff format --check python tests/python benches examples

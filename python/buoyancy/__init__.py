@@ -15,6 +15,7 @@ pose ``(position, rotation)`` maps it to the world, ``x_world = R @ x_mesh + pos
 :class:`Water` and every result are in the world frame.
 """
 
+from . import shapes
 from ._core import (
     METHODS,
     Buoyancy,
@@ -26,7 +27,6 @@ from ._core import (
     Water,
     load,
 )
-from . import shapes
 
 __all__ = [
     "METHODS",

@@ -14,21 +14,21 @@ _FloatArray: TypeAlias = npt.NDArray[np.float64]
 _IntArray: TypeAlias = npt.NDArray[np.int64]
 
 __all__ = [
-    "Mesh",
-    "Water",
+    "MATRIX_TOLERANCE",
+    "METHODS",
+    "QUATERNION_TOLERANCE",
     "Buoyancy",
     "BuoyancyBatch",
     "Damping",
     "DampingCoefficients",
+    "Mesh",
     "MeshError",
-    "load",
+    "Water",
     "cube",
-    "uv_sphere",
+    "load",
     "torus",
     "torus_knot",
-    "METHODS",
-    "QUATERNION_TOLERANCE",
-    "MATRIX_TOLERANCE",
+    "uv_sphere",
 ]
 
 METHODS: Final[tuple[str, str, str, str, str]]

@@ -29,9 +29,7 @@ __all__ = ["ENVIRONMENT_VARIABLE", "find_sample_mesh", "not_found_message", "sam
 ENVIRONMENT_VARIABLE = "BUOYANCY_MESHES"
 
 
-def sample_meshes_dir(
-    repository: str | os.PathLike[str], environ: Mapping[str, str] | None = None
-) -> pathlib.Path:
+def sample_meshes_dir(repository: str | os.PathLike[str], environ: Mapping[str, str] | None = None) -> pathlib.Path:
     """The folder the sample meshes are looked for in (it may not exist):
     ``$BUOYANCY_MESHES`` if set and not empty, else ``../shared/meshes`` beside ``repository``.
 

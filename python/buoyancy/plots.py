@@ -16,8 +16,8 @@ import argparse
 import math
 import pathlib
 import sys
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Callable, Sequence
 
 import numpy as np
 import numpy.typing as npt
@@ -83,8 +83,7 @@ def accuracy_data(
     positions[:, 1] = h
     water = Water(density=1.0, gravity=1.0)
     forces = {
-        method: body.mesh.buoyancy_batch(positions, None, water=water, method=method).force[:, 1]
-        for method in METHODS
+        method: body.mesh.buoyancy_batch(positions, None, water=water, method=method).force[:, 1] for method in METHODS
     }
     return h, body.analytic(h), forces
 
@@ -150,7 +149,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m buoyancy.plots", description=__doc__.split("\n\n")[0])
     commands = parser.add_subparsers(dest="command", required=True)
     acc = commands.add_parser("accuracy", help="the paper's Figure 4: force and error versus h")
-    acc.add_argument("--out", type=pathlib.Path, default=pathlib.Path("out"), help="folder for the PNGs (default ./out)")
+    acc.add_argument(
+        "--out", type=pathlib.Path, default=pathlib.Path("out"), help="folder for the PNGs (default ./out)"
+    )
     acc.add_argument("--samples", type=int, default=199, help="heights per body (default 199)")
     acc.add_argument("--small", action="store_true", help="the two coarse bodies only (quick)")
     args = parser.parse_args(argv)

@@ -59,8 +59,9 @@ Frames and units
 from __future__ import annotations
 
 import math
+from collections.abc import Hashable
 from dataclasses import dataclass, field
-from typing import Any, Hashable
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -71,8 +72,7 @@ try:
     import rapier3d  # noqa: F401  (the bodies this module drives are rapier3d's)
 except ImportError as error:  # pragma: no cover - exercised only without rapier3d
     raise ImportError(
-        "buoyancy.rapier needs rapier's Python binding: pip install 'buoyancy[rapier]' "
-        "(or pip install rapier3d)"
+        "buoyancy.rapier needs rapier's Python binding: pip install 'buoyancy[rapier]' (or pip install rapier3d)"
     ) from error
 
 __all__ = ["FloatReport", "FloatingBodies"]
@@ -367,9 +367,7 @@ class FloatingBodies:
                 continue
             # Wake a sleeping body only for a change that matters (say the water moved).
             scale = _norm(force) + float(rb.mass) * 9.81e-3 + 1e-30
-            wake = bool(
-                _norm(delta_force) > 1e-3 * scale or _norm(delta_torque) > 1e-3 * (_norm(torque) + scale)
-            )
+            wake = bool(_norm(delta_force) > 1e-3 * scale or _norm(delta_torque) > 1e-3 * (_norm(torque) + scale))
             rb.add_force(tuple(delta_force.astype(np.float64)), wake)
             rb.add_torque(tuple(delta_torque.astype(np.float64)), wake)
             entry.applied_force = force32

@@ -9,4 +9,4 @@
 
 from ._core import cube, torus, torus_knot, uv_sphere
 
-__all__ = ["cube", "uv_sphere", "torus", "torus_knot"]
+__all__ = ["cube", "torus", "torus_knot", "uv_sphere"]

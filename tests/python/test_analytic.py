@@ -9,6 +9,7 @@ import pytest
 
 import buoyancy
 from buoyancy import shapes
+
 from conftest import quaternion_matrix, random_quaternions
 
 UNIT = buoyancy.Water(density=1.0, gravity=1.0)
@@ -112,11 +113,15 @@ def test_torque_is_the_moment_of_the_force_at_the_center(rng: np.random.Generato
     for q in random_quaternions(rng, 10):
         for method in ("exact", "improved", "fast"):
             b = knot.buoyancy((0, 0.3, 0), q, method=method)
-            np.testing.assert_allclose(b.torque, np.cross(b.center - b.about, b.force), atol=1e-8 * np.linalg.norm(b.force) + 1e-12)
+            np.testing.assert_allclose(
+                b.torque, np.cross(b.center - b.about, b.force), atol=1e-8 * np.linalg.norm(b.force) + 1e-12
+            )
             point = rng.normal(size=3)
             moved = knot.buoyancy((0, 0.3, 0), q, method=method, about=point)
             np.testing.assert_array_equal(moved.about, point)
-            np.testing.assert_allclose(moved.torque, b.torque + np.cross(b.about - point, b.force), atol=1e-9 * np.linalg.norm(b.force) + 1e-12)
+            np.testing.assert_allclose(
+                moved.torque, b.torque + np.cross(b.about - point, b.force), atol=1e-9 * np.linalg.norm(b.force) + 1e-12
+            )
 
 
 def test_dry_body_has_no_force() -> None:

@@ -14,6 +14,7 @@ import pytest
 import buoyancy
 from buoyancy import shapes
 from buoyancy._sample_meshes import sample_meshes_dir
+
 from conftest import REPO, quaternion_matrix, random_quaternions, require_sample_mesh
 
 TET_V = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
@@ -82,7 +83,10 @@ def test_reprs() -> None:
     assert repr(mesh) == "Mesh(n_vertices=4, n_triangles=4, volume=0.166667, centroid=[0.25, 0.25, 0.25])"
     assert repr(buoyancy.Water()) == "Water(density=1000, gravity=9.81, level=0, normal=(0, 1, 0))"
     b = shapes.cube().buoyancy((0, -0.25, 0))
-    assert repr(b) == "Buoyancy(volume=0.75, center=[0, -0.375, 0], force=[0, 7357.5, 0], torque=[0, 0, 0], method='exact')"
+    assert (
+        repr(b)
+        == "Buoyancy(volume=0.75, center=[0, -0.375, 0], force=[0, 7357.5, 0], torque=[0, 0, 0], method='exact')"
+    )
 
 
 def test_water() -> None:
@@ -94,7 +98,9 @@ def test_water() -> None:
     assert buoyancy.Water() == buoyancy.Water(1000.0, 9.81, 0.0, (0.0, 1.0, 0.0))
     # The default water is the one used when none is given.
     cube = shapes.cube()
-    np.testing.assert_array_equal(cube.buoyancy((0, -0.2, 0)).force, cube.buoyancy((0, -0.2, 0), water=buoyancy.Water()).force)
+    np.testing.assert_array_equal(
+        cube.buoyancy((0, -0.2, 0)).force, cube.buoyancy((0, -0.2, 0), water=buoyancy.Water()).force
+    )
 
 
 def test_argument_forms_agree(rng: np.random.Generator) -> None:
@@ -145,11 +151,17 @@ def test_method_names_in_any_spelling(spellings: tuple[str, ...], name: str) -> 
 
 def test_traversal_names_in_any_spelling() -> None:
     knot = shapes.torus_knot()
-    for traversal, spellings in (("scan", ("Scan", "SCAN")), ("hierarchy", ("Hierarchy", "HIERARCHY")), ("auto", ("Auto",))):
+    for traversal, spellings in (
+        ("scan", ("Scan", "SCAN")),
+        ("hierarchy", ("Hierarchy", "HIERARCHY")),
+        ("auto", ("Auto",)),
+    ):
         expected = knot.buoyancy((0, 0.1, 0), traversal=traversal)
         for spelling in spellings:
             assert knot.buoyancy((0, 0.1, 0), traversal=spelling) == expected, spelling
-            np.testing.assert_array_equal(knot.buoyancy_batch([(0, 0.1, 0)], None, traversal=spelling).force[0], expected.force)
+            np.testing.assert_array_equal(
+                knot.buoyancy_batch([(0, 0.1, 0)], None, traversal=spelling).force[0], expected.force
+            )
 
 
 def obj_text(mesh: buoyancy.Mesh) -> str:
@@ -164,7 +176,7 @@ def stl_ascii(mesh: buoyancy.Mesh) -> str:
         out.append("facet normal 0 0 0\nouter loop")
         out += [f"vertex {float(x)!r} {float(y)!r} {float(z)!r}" for x, y, z in mesh.vertices[t]]
         out.append("endloop\nendfacet")
-    return "\n".join(out + ["endsolid test"]) + "\n"
+    return "\n".join([*out, "endsolid test"]) + "\n"
 
 
 def stl_binary(mesh: buoyancy.Mesh) -> bytes:
@@ -332,7 +344,9 @@ def test_buoyancy_pickles_and_compares_by_value() -> None:
             np.testing.assert_array_equal(getattr(copy, field), getattr(b, field))
     assert b != knot.buoyancy((0.1, 0.05, 0), (0, 0, 0.6, 0.8), method="improved")  # about differs
     assert b != knot.buoyancy((0.1, 0.05, 0), (0, 0, 0.6, 0.8), method="exact", about=(1, 2, 3))
-    built = buoyancy.Buoyancy(b.volume, b.center, b.force, b.torque, b.about, b.fully_submerged, b.partially_submerged, "Improved")
+    built = buoyancy.Buoyancy(
+        b.volume, b.center, b.force, b.torque, b.about, b.fully_submerged, b.partially_submerged, "Improved"
+    )
     assert built == b
     assert buoyancy.Buoyancy(0.5, (0, 0, 0), (0, 1, 0), (0, 0, 0), (0, 0, 0)).method == "exact"
     with pytest.raises(ValueError, match="^force: has a NaN"):
@@ -383,7 +397,7 @@ def test_transformed_copies_pickle_bit_for_bit() -> None:
         restored = pickle.loads(pickle.dumps(copy))
         assert restored == copy
         np.testing.assert_array_equal(restored.centroid, copy.centroid)
-        position = copy.centroid + (0.0, 0.05, 0.0)
+        position = copy.centroid + np.array([0.0, 0.05, 0.0])
         assert restored.buoyancy(position, (0, 0, 0.6, 0.8)) == copy.buoyancy(position, (0, 0, 0.6, 0.8))
 
 
@@ -392,13 +406,25 @@ def test_transformed_copies_pickle_bit_for_bit() -> None:
     [
         (lambda m: m.translated((0, np.nan, 0)), ValueError, "^offset: has a NaN or infinite component$"),
         (lambda m: m.translated((0, 1)), ValueError, r"^offset: expected 3 numbers"),
-        (lambda m: m.scaled(0), ValueError, "^factor: invalid transform: every scale factor must be finite and non-zero$"),
+        (
+            lambda m: m.scaled(0),
+            ValueError,
+            "^factor: invalid transform: every scale factor must be finite and non-zero$",
+        ),
         (lambda m: m.scaled((1, np.inf, 1)), ValueError, "^factor: has a NaN or infinite component$"),
         (lambda m: m.scaled((1, 2)), ValueError, r"^factor: expected 3 numbers"),
-        (lambda m: m.transformed(np.eye(3)), ValueError, r"^matrix: expected a 4×4 homogeneous matrix .* got shape \(3, 3\)$"),
+        (
+            lambda m: m.transformed(np.eye(3)),
+            ValueError,
+            r"^matrix: expected a 4×4 homogeneous matrix .* got shape \(3, 3\)$",
+        ),
         (lambda m: m.transformed(np.full((4, 4), np.nan)), ValueError, "^matrix: has a NaN or infinite component$"),
         (lambda m: m.transformed(np.ones((4, 4))), ValueError, "^matrix: invalid transform: the last row"),
-        (lambda m: m.transformed(np.diag([1.0, 0.0, 1.0, 1.0])), buoyancy.MeshError, "^matrix: the mesh encloses no volume"),
+        (
+            lambda m: m.transformed(np.diag([1.0, 0.0, 1.0, 1.0])),
+            buoyancy.MeshError,
+            "^matrix: the mesh encloses no volume",
+        ),
     ],
 )
 def test_transform_errors_name_the_argument(call, error: type[Exception], match: str) -> None:  # type: ignore[no-untyped-def]
@@ -467,7 +493,20 @@ def test_readme_python_example() -> None:
 
 def test_stubs_match_the_module() -> None:
     stub = (pathlib.Path(buoyancy.__file__).parent / "_core.pyi").read_text()
-    for name in ("Mesh", "Water", "Buoyancy", "BuoyancyBatch", "Damping", "DampingCoefficients", "MeshError", "load", "cube", "uv_sphere", "torus", "torus_knot"):
+    for name in (
+        "Mesh",
+        "Water",
+        "Buoyancy",
+        "BuoyancyBatch",
+        "Damping",
+        "DampingCoefficients",
+        "MeshError",
+        "load",
+        "cube",
+        "uv_sphere",
+        "torus",
+        "torus_knot",
+    ):
         assert re.search(rf"^(class|def) {name}\b", stub, re.M), name
         assert hasattr(buoyancy._core, name)
     for cls in (

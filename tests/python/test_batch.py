@@ -9,6 +9,7 @@ import pytest
 
 import buoyancy
 from buoyancy import shapes
+
 from conftest import quaternion_matrix, random_quaternions
 
 FIELDS = ("volume", "center", "force", "torque", "about")
@@ -22,7 +23,9 @@ def assert_batch_is_loop(mesh, positions, rotations, **kwargs) -> buoyancy.Buoya
         point = about if about is None or np.ndim(about) == 1 else about[k]
         single = mesh.buoyancy(positions[k], None if rotations is None else rotations[k], about=point, **kwargs)
         for field in FIELDS:
-            np.testing.assert_array_equal(getattr(batch, field)[k], getattr(single, field), err_msg=f"pose {k}, {field}")
+            np.testing.assert_array_equal(
+                getattr(batch, field)[k], getattr(single, field), err_msg=f"pose {k}, {field}"
+            )
         assert batch.fully_submerged[k] == single.fully_submerged
         assert batch.partially_submerged[k] == single.partially_submerged
     return batch
@@ -117,7 +120,7 @@ def test_four_python_threads_at_once(rng: np.random.Generator) -> None:
         t.start()
     for t in threads:
         t.join()
-    for got, want in zip(results, expected):
+    for got, want in zip(results, expected, strict=True):
         assert isinstance(got, buoyancy.BuoyancyBatch)
         for field in FIELDS:
             np.testing.assert_array_equal(getattr(got, field), getattr(want, field))
@@ -149,7 +152,10 @@ def test_traversals_agree_and_bad_names_are_named() -> None:
     rotations /= np.linalg.norm(rotations, axis=1, keepdims=True)
     scale_v = knot.volume
     for method in buoyancy.METHODS:
-        batches = {t: knot.buoyancy_batch(positions, rotations, method=method, traversal=t) for t in ("auto", "scan", "hierarchy")}
+        batches = {
+            t: knot.buoyancy_batch(positions, rotations, method=method, traversal=t)
+            for t in ("auto", "scan", "hierarchy")
+        }
         for t in ("auto", "hierarchy"):
             assert np.max(np.abs(batches[t].volume - batches["scan"].volume)) <= 1e-10 * scale_v
             assert np.max(np.abs(batches[t].force - batches["scan"].force)) <= 1e-10 * 9810 * scale_v

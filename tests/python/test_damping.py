@@ -9,6 +9,7 @@ import pytest
 
 import buoyancy
 from buoyancy import shapes
+
 from conftest import random_quaternions
 
 
@@ -104,7 +105,9 @@ def test_coefficients() -> None:
     # Halving the linear coefficient halves the linear part of the drag.
     cube = shapes.cube()
     linear_only = buoyancy.DampingCoefficients(drag_coefficient=0, angular_drag_linear=0, angular_drag_quadratic=0)
-    half = buoyancy.DampingCoefficients(linear_drag=500, drag_coefficient=0, angular_drag_linear=0, angular_drag_quadratic=0)
+    half = buoyancy.DampingCoefficients(
+        linear_drag=500, drag_coefficient=0, angular_drag_linear=0, angular_drag_quadratic=0
+    )
     f1 = cube.damping((0, -2, 0), None, (0, 1, 0), coefficients=linear_only).force
     f2 = cube.damping((0, -2, 0), None, (0, 1, 0), coefficients=half).force
     np.testing.assert_allclose(f1, [0, -1000, 0], atol=1e-9)
@@ -118,7 +121,9 @@ def test_pickle_and_repr() -> None:
     copy = pickle.loads(pickle.dumps(d, protocol=pickle.HIGHEST_PROTOCOL))
     assert copy == d and copy.wetted_area == d.wetted_area
     np.testing.assert_array_equal(copy.torque, d.torque)
-    assert repr(d) == "Damping(force=[0, 4000, 0], torque=[0, 0, 0], about=[0, -3, 0], wetted_area=6, wetted_fraction=1)"
+    assert (
+        repr(d) == "Damping(force=[0, 4000, 0], torque=[0, 0, 0], about=[0, -3, 0], wetted_area=6, wetted_fraction=1)"
+    )
     with pytest.raises(AttributeError):
         d.wetted_area = 0  # type: ignore[misc]
 

@@ -29,17 +29,17 @@ def test_mesh_error_is_a_value_error() -> None:
         (TET_V, [], "no triangles"),
         ([(0, 0, 0), (1, 0, 0), (0, NAN, 0), (0, 0, 1)], TET_F, "NaN or infinite coordinate: vertex 2"),
         ([(0, 0, 0), (1, 0, 0), (0, INF, 0), (0, 0, 1)], TET_F, "NaN or infinite coordinate: vertex 2"),
-        (TET_V, TET_F[:3] + [(1, 2, 9)], "triangle 3 refers to vertex 9"),
+        (TET_V, [*TET_F[:3], (1, 2, 9)], "triangle 3 refers to vertex 9"),
         (TET_V, [(0, 2, 1), (0, 1, 1), (0, 3, 2), (1, 2, 3)], r"uses a vertex twice: triangle 1 \[0, 1, 1\]"),
         (TET_V, TET_F[:3], r"not closed\): edge \(1, 2\) of triangle 0"),
-        (TET_V, TET_F[:3] + [(1, 3, 2)], r"triangles 0 and 3 both traverse edge 2 -> 1"),
-        (TET_V + [(1, 1, -1)], TET_F + [(1, 2, 4), (2, 1, 4)], r"edge \(1, 2\) shared by triangles 0, 3, 4, 5"),
+        (TET_V, [*TET_F[:3], (1, 3, 2)], r"triangles 0 and 3 both traverse edge 2 -> 1"),
+        ([*TET_V, (1, 1, -1)], [*TET_F, (1, 2, 4), (2, 1, 4)], r"edge \(1, 2\) shared by triangles 0, 3, 4, 5"),
         (TET_V, [(0, 1, 2), (0, 2, 1)], "encloses no volume"),
         (np.zeros((4, 2)), TET_F, r"vertices: expected shape \(N, 3\), got shape \(4, 2\)"),
         (np.zeros(12), TET_F, r"vertices: expected shape \(N, 3\), got shape \(12,\)"),
         (TET_V, np.zeros((4, 4), int), r"faces: expected shape \(M, 3\)"),
-        (TET_V, TET_F[:3] + [(1, 2, 3.5)], r"faces\[3\]: 3.5 is not a vertex index"),
-        (TET_V, TET_F[:3] + [(1, 2, -3)], r"faces\[3\]: -3 is not a vertex index"),
+        (TET_V, [*TET_F[:3], (1, 2, 3.5)], r"faces\[3\]: 3.5 is not a vertex index"),
+        (TET_V, [*TET_F[:3], (1, 2, -3)], r"faces\[3\]: -3 is not a vertex index"),
         ([("a", "b", "c")] * 4, TET_F, "vertices: expected an array of numbers"),
         ([(0, 0, 0), (1, 0)], TET_F, "vertices: expected an array of numbers"),
     ],
@@ -76,9 +76,14 @@ def test_gravity_as_a_vector_says_how_to_write_it() -> None:
     )
     with pytest.raises(TypeError, match=message):
         buoyancy.Water(gravity=(0, 0, -9.81))  # type: ignore[arg-type]
-    with pytest.raises(TypeError, match=r"^gravity: .* got numpy.ndarray; .* write Water\(gravity=9.81, normal=\(1, 0, 0\)\)$"):
+    with pytest.raises(
+        TypeError, match=r"^gravity: .* got numpy.ndarray; .* write Water\(gravity=9.81, normal=\(1, 0, 0\)\)$"
+    ):
         buoyancy.Water(gravity=np.array([-9.81, 0, 0]))  # type: ignore[arg-type]
-    with pytest.raises(TypeError, match="^gravity: expected a number, the magnitude of gravity in m/s², got str; its direction is -normal$"):
+    with pytest.raises(
+        TypeError,
+        match="^gravity: expected a number, the magnitude of gravity in m/s², got str; its direction is -normal$",
+    ):
         buoyancy.Water(gravity="down")  # type: ignore[arg-type]
     # What the message suggests is the same water as rapier's gravity vector (0, 0, -9.81) means.
     assert buoyancy.Water(gravity=9.81, normal=(0, 0, 1)).normal.tolist() == [0, 0, 1]
@@ -112,8 +117,14 @@ TET = buoyancy.Mesh(TET_V, TET_F)
         (lambda: shapes.torus(segments=[3]), "segments: expected an integer, got list"),
         (lambda: shapes.torus_knot(p="2"), "p: expected an integer, got str"),
         (lambda: shapes.torus_knot(tube_radius=None, sides=object()), "sides: expected an integer, got object"),
-        (lambda: buoyancy.Buoyancy("1", (0, 0, 0), (0, 0, 0), (0, 0, 0), (0, 0, 0)), "volume: expected a number, got str"),
-        (lambda: buoyancy.Buoyancy(1, (0, 0, 0), (0, 0, 0), (0, 0, 0), (0, 0, 0), 1.5), "fully_submerged: expected an integer, got float"),
+        (
+            lambda: buoyancy.Buoyancy("1", (0, 0, 0), (0, 0, 0), (0, 0, 0), (0, 0, 0)),
+            "volume: expected a number, got str",
+        ),
+        (
+            lambda: buoyancy.Buoyancy(1, (0, 0, 0), (0, 0, 0), (0, 0, 0), (0, 0, 0), 1.5),
+            "fully_submerged: expected an integer, got float",
+        ),
         (lambda: TET.buoyancy_batch([(0, 0, 0)], None)["0"], "index: expected an integer, got str"),
     ],
 )
@@ -129,7 +140,10 @@ def test_wrong_types_name_the_argument(call, message: str) -> None:  # type: ign
         (lambda: shapes.cube(-2), "^n: must be a non-negative integer, got -2$"),
         (lambda: shapes.torus_knot(q=2**40), "^q: is too large$"),
         (lambda: shapes.uv_sphere(slices=2**70), "^slices: is too large$"),
-        (lambda: TET.buoyancy_batch([(0, 0, 0)], None, threads=-1), "^threads: must be a non-negative integer, got -1$"),
+        (
+            lambda: TET.buoyancy_batch([(0, 0, 0)], None, threads=-1),
+            "^threads: must be a non-negative integer, got -1$",
+        ),
     ],
 )
 def test_out_of_range_integers_name_the_argument(call, match: str) -> None:  # type: ignore[no-untyped-def]
@@ -158,7 +172,10 @@ ROT_45 = np.array([[np.cos(0.7), -np.sin(0.7), 0], [np.sin(0.7), np.cos(0.7), 0]
         (dict(rotation=np.diag([1.0, 1.0, -1.0])), "rotation: the 3×3 matrix is a reflection"),
         (dict(rotation=ROT_45 * np.array([1, 1, NAN])), "rotation: has a NaN or infinite component"),
         (dict(rotation=np.eye(4)), r"rotation: expected a quaternion .* got shape \(4, 4\)"),
-        (dict(method="slow"), "method: unknown method \"slow\"; valid methods are fast, improved, exact, fast_surface, exact_surface"),
+        (
+            dict(method="slow"),
+            'method: unknown method "slow"; valid methods are fast, improved, exact, fast_surface, exact_surface',
+        ),
         (dict(about=(0, 0)), r"about: expected 3 numbers .* got shape \(2,\)"),
         (dict(about=(0, NAN, 0)), "about: has a NaN or infinite component"),
     ],
@@ -188,12 +205,24 @@ QUATS = np.tile([0.0, 0.0, 0.0, 1.0], (3, 1))
         ((np.array([[0, 0, 0], [0, NAN, 0], [0, 0, 0]]), QUATS), {}, r"positions\[1\]: has a NaN"),
         ((GOOD, np.zeros((3, 3))), {}, r"rotations: expected quaternions .* got shape \(3, 3\)"),
         ((GOOD, QUATS[:2]), {}, "rotations: has 2 rotations for 3 positions"),
-        ((GOOD, np.array([[0, 0, 0, 1], [0, 0, 0, 3], [0, 0, 0, 1]])), {}, r"rotations\[1\]: the quaternion .* has norm 3"),
+        (
+            (GOOD, np.array([[0, 0, 0, 1], [0, 0, 0, 3], [0, 0, 0, 1]])),
+            {},
+            r"rotations\[1\]: the quaternion .* has norm 3",
+        ),
         ((GOOD, np.array([[0, 0, 0, 1], [0, 0, 0, 1], [INF, 0, 0, 1]])), {}, r"rotations\[2\]: has a NaN"),
         ((GOOD, np.array([np.eye(3), np.eye(3), -np.eye(3)])), {}, r"rotations\[2\]: the 3×3 matrix is a reflection"),
-        ((GOOD, np.array([np.eye(3), 3 * np.eye(3), np.eye(3)])), {}, r"rotations\[1\]: the 3×3 matrix is not a rotation"),
+        (
+            (GOOD, np.array([np.eye(3), 3 * np.eye(3), np.eye(3)])),
+            {},
+            r"rotations\[1\]: the 3×3 matrix is not a rotation",
+        ),
         ((GOOD, QUATS), dict(method="Exactly"), "method: unknown method"),
-        ((GOOD, QUATS), dict(about=np.zeros((2, 3))), r"about: expected one point \(3,\) or one per pose \(3, 3\), got shape \(2, 3\)"),
+        (
+            (GOOD, QUATS),
+            dict(about=np.zeros((2, 3))),
+            r"about: expected one point \(3,\) or one per pose \(3, 3\), got shape \(2, 3\)",
+        ),
         ((GOOD, QUATS), dict(about=(0, NAN, 0)), "about: has a NaN"),
         ((GOOD, QUATS), dict(threads=0), "threads: must be at least 1"),
     ],
@@ -224,7 +253,9 @@ def test_load_errors(tmp_path: pathlib.Path) -> None:
         buoyancy.load(tmp_path / "short.stl")
 
 
-@pytest.mark.skipif(not hasattr(os, "geteuid") or os.geteuid() == 0, reason="root reads any file: no permission error to provoke")
+@pytest.mark.skipif(
+    not hasattr(os, "geteuid") or os.geteuid() == 0, reason="root reads any file: no permission error to provoke"
+)
 def test_load_unreadable_file_is_a_permission_error(tmp_path: pathlib.Path) -> None:
     path = tmp_path / "locked.obj"
     path.write_text("v 0 0 0\n")

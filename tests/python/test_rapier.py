@@ -13,6 +13,7 @@ import pytest
 
 import buoyancy
 from buoyancy._sample_meshes import find_sample_mesh
+
 from conftest import REPO
 
 try:
@@ -23,7 +24,7 @@ except ImportError as error:  # not installed, or installed but not loadable her
         "scripts/test.sh installs it when the package index allows",
         allow_module_level=True,
     )
-from buoyancy.rapier import FloatingBodies, FloatReport  # noqa: E402
+from buoyancy.rapier import FloatingBodies, FloatReport
 
 
 def load_example() -> Any:
@@ -72,7 +73,7 @@ def test_the_users_own_forces_are_preserved() -> None:
     rb = world.rigid_bodies[h]
     rb.add_force(tuple(thrust))
     rb.add_torque(tuple(twist))
-    for step in range(120):
+    for _ in range(120):
         fb.apply(world.rigid_bodies, world.integration_parameters.dt)
         report = fb.report(h)
         assert isinstance(report, FloatReport) and not report.skipped
@@ -185,7 +186,9 @@ def test_z_up_world_and_per_body_overrides() -> None:
 
 def test_bookkeeping_and_errors() -> None:
     world, h = world_with_cube(y=-0.2)
-    fixed = world.add_body(rapier3d.RigidBody.fixed().translation((3.0, -0.2, 0.0)), [rapier3d.Collider.cuboid(0.5, 0.5, 0.5)])
+    fixed = world.add_body(
+        rapier3d.RigidBody.fixed().translation((3.0, -0.2, 0.0)), [rapier3d.Collider.cuboid(0.5, 0.5, 0.5)]
+    )
     fb = FloatingBodies()
     cube = buoyancy.shapes.cube()
     fb.register(h, cube)
