@@ -13,9 +13,11 @@
 //! of the points of a node's box lie in `[Σₖ min(nₖloₖ, nₖhiₖ) + h_c, Σₖ max(nₖloₖ, nₖhiₖ) + h_c]`.
 //! Computed in `T`, either end is within `4ε·(M + |h_c|)` of its exact value, and so is every
 //! vertex height the scan computes, with `M = Σₖ max(|loₖ|, |hiₖ|)` over the root's box (a bound
-//! for every node). A node whose interval lies below zero by more than the margin
-//! `8ε·(M + |h_c|)` has every triangle fully submerged, with no vertex in the surface, and
-//! contributes its stored sums; one above zero by the margin contributes nothing; any other is
+//! for every node): [`Hierarchy::height_round_off`]. Vertex heights within that bound of zero
+//! are taken as zero (see `frame`). A node whose interval lies below zero by more than the
+//! margin `16ε·(M + |h_c|)` therefore has every vertex height computed below `−4ε·(M + |h_c|)`:
+//! every triangle fully submerged, no vertex in the surface; it contributes its stored sums. One
+//! above zero by the margin contributes nothing; any other is
 //! opened, down to the leaves, whose triangles go through the same per-triangle code as the scan.
 //! The classification of every triangle is therefore the scan's own, and the result equals the
 //! scan's up to the order of summation. The cost follows the number of nodes the plane crosses,
@@ -112,9 +114,7 @@ impl<T: Real> PlaneTest<T> {
         PlaneTest {
             normal,
             height,
-            margin: T::default_epsilon()
-                * T::from_f64_lossy(8.0)
-                * (hierarchy.magnitude + height.abs()),
+            margin: hierarchy.height_round_off(height) * T::from_f64_lossy(4.0),
             near,
             far: near.map(|k| (k + 3) % 6),
         }
@@ -289,6 +289,13 @@ impl<T: Real> Hierarchy<T> {
         }
         let start = self.nodes[first].link as usize;
         start..start + self.nodes[index].count as usize
+    }
+
+    /// `4ε·(M + |h_c|)`: a bound on the round-off of every vertex height and node bound computed
+    /// for a centroid at `height` above the surface (see the module documentation).
+    #[inline]
+    pub fn height_round_off(&self, height: T) -> T {
+        T::default_epsilon() * T::from_f64_lossy(4.0) * (self.magnitude + height.abs())
     }
 
     /// Bytes of memory the hierarchy uses.

@@ -312,12 +312,13 @@ fn enclosed_volume(
 }
 
 /// The volume methods' terms of a triangle of corners `[a, b, c]` (relative to the centroid):
-/// `det = a·(b×c)` and `det·(a + b + c)`; no surface terms.
+/// `det = a·(b×c)`, `det·(a + b + c)` and `(b − a)×(c − a)`; no surface terms.
 fn volume_terms([a, b, c]: [Vector3<f64>; 3]) -> TriangleTerms {
     let det = a.dot(&b.cross(&c));
     TriangleTerms {
         volume6: det,
         moment24: (a + b + c) * det,
+        area2: (b - a).cross(&(c - a)),
         surface: SurfaceMoments::zero(),
     }
 }

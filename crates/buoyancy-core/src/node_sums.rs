@@ -8,7 +8,8 @@
 //! * for the volume methods, every node (leaves included) stores `Σ detᵢ` and
 //!   `Σ detᵢ·(aᵢ + bᵢ + cᵢ)` with `detᵢ = aᵢ·(bᵢ×cᵢ)`: six times the volume and twenty-four
 //!   times the first moment of the tetrahedra from the centroid to its triangles, what `Fast`
-//!   sums over the fully submerged triangles ([`VolumeNodeSums`]);
+//!   sums over the fully submerged triangles, and `Σ (bᵢ − aᵢ)×(cᵢ − aᵢ)`, which moves the
+//!   tetrahedra's apex onto the water plane for `Exact` and `Improved` ([`VolumeNodeSums`]);
 //! * for the surface methods, every inner node stores the 30 coefficients of its triangles'
 //!   pressure integrals as polynomials in the water plane ([`SurfaceMoments`]); leaves hold at
 //!   most a few triangles, which a query integrates directly, so they store nothing.
@@ -27,6 +28,8 @@ pub(crate) struct TriangleTerms {
     pub volume6: f64,
     /// `det·(a + b + c)`.
     pub moment24: Vector3<f64>,
+    /// `(b − a)×(c − a)`, twice the area vector.
+    pub area2: Vector3<f64>,
     /// The coefficients of its pressure integrals.
     pub surface: SurfaceMoments<f64>,
 }
@@ -38,6 +41,8 @@ pub(crate) struct VolumeNodeSums<T: Real> {
     pub volume6: T,
     /// `Σ det·(a + b + c)`: twenty-four times their first moment about the centroid.
     pub moment24: Vector3<T>,
+    /// `Σ (b − a)×(c − a)`: twice the sum of their area vectors.
+    pub area2: Vector3<T>,
 }
 
 /// The sums of every node of a [`Hierarchy`], indexed by node.
@@ -59,7 +64,7 @@ impl<T: Real> NodeSums<T> {
         let mut builder = Builder {
             hierarchy,
             terms,
-            volume: alloc::vec![(0.0, Vector3::zeros()); count],
+            volume: alloc::vec![(0.0, Vector3::zeros(), Vector3::zeros()); count],
             surface_slots: alloc::vec![u32::MAX; count],
             surface: Vec::new(),
         };
@@ -70,9 +75,10 @@ impl<T: Real> NodeSums<T> {
             volume: builder
                 .volume
                 .iter()
-                .map(|&(volume6, moment24)| VolumeNodeSums {
+                .map(|&(volume6, moment24, area2)| VolumeNodeSums {
                     volume6: T::from_f64_lossy(volume6),
                     moment24: moment24.map(T::from_f64_lossy),
+                    area2: area2.map(T::from_f64_lossy),
                 })
                 .collect(),
             surface_slots: builder.surface_slots,
@@ -103,21 +109,28 @@ impl<T: Real> NodeSums<T> {
 struct Builder<'a, T: Real, F> {
     hierarchy: &'a Hierarchy<T>,
     terms: F,
-    volume: Vec<(f64, Vector3<f64>)>,
+    volume: Vec<(f64, Vector3<f64>, Vector3<f64>)>,
     surface_slots: Vec<u32>,
     surface: Vec<SurfaceMoments<f64>>,
 }
 
 impl<T: Real, F: Fn(usize) -> TriangleTerms> Builder<'_, T, F> {
     /// The sums of the subtree at `index`, recording those of its nodes.
-    fn subtree(&mut self, index: usize) -> ((f64, Vector3<f64>), SurfaceMoments<f64>) {
+    fn subtree(
+        &mut self,
+        index: usize,
+    ) -> ((f64, Vector3<f64>, Vector3<f64>), SurfaceMoments<f64>) {
         let (volume, surface) = match self.hierarchy.children(index) {
             None => {
-                let (mut volume, mut surface) = ((0.0, Vector3::zeros()), SurfaceMoments::zero());
+                let (mut volume, mut surface) = (
+                    (0.0, Vector3::zeros(), Vector3::zeros()),
+                    SurfaceMoments::zero(),
+                );
                 for i in self.hierarchy.range(index) {
                     let t = (self.terms)(i);
                     volume.0 += t.volume6;
                     volume.1 += t.moment24;
+                    volume.2 += t.area2;
                     surface.add(&t.surface);
                 }
                 (volume, surface)
@@ -130,6 +143,7 @@ impl<T: Real, F: Fn(usize) -> TriangleTerms> Builder<'_, T, F> {
                 let (right_volume, right_surface) = self.subtree(right);
                 volume.0 += right_volume.0;
                 volume.1 += right_volume.1;
+                volume.2 += right_volume.2;
                 surface.add(&right_surface);
                 self.surface[slot] = surface;
                 (volume, surface)

@@ -17,6 +17,7 @@ use crate::buoyancy::TriangleCounts;
 use crate::clip::{TriangleClass, WaterlineCut, classify, cut_at_waterline};
 use crate::frame::Frame;
 use crate::hierarchy::Visit;
+use crate::node_sums::VolumeNodeSums;
 use crate::reduction::{Sums, reduce};
 use crate::{Buoyancy, Mesh, Method, Real, Water};
 
@@ -65,14 +66,43 @@ impl<T: Real> VolumeSums<T> {
     }
 }
 
-/// `Exact`'s sums, and for `Improved` the clipped parts of the waterline triangles too.
+/// `Exact`'s and `Improved`'s sums.
+///
+/// The moments are summed about the centroid (`exact`). The volume is summed about `apex`, the
+/// projection of the centroid on the water plane, where the cap contributes nothing and every
+/// other term is a face of the submerged part times its distance from the plane: the fully
+/// submerged triangles as `Σ detᵢ − apex·Σ 2Aᵢ` (`2Aᵢ = (bᵢ − aᵢ)×(cᵢ − aᵢ)`, from the
+/// precomputed `detᵢ` about the centroid) and each cut triangle's submerged part `P` as
+/// `(ab − apex)·2A_P`, with `ab` a waterline point of `P`. A part of size `δ` then contributes
+/// in proportion to `δ`, not to the distance of `apex` (summing it about the centroid with the
+/// cap leaves round-off of the size of the body times `δ`, which swamps the `δ³` volume of a body
+/// dipping a corner into the water).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct ExactSums<T: Real> {
     /// The submerged volume's sums about the centroid: fully submerged triangles, clipped
     /// waterline triangles and the cap.
     pub exact: VolumeSums<T>,
+    /// `Σ detᵢ` over the fully submerged triangles (not lying in the surface).
+    pub submerged_volume6: T,
+    /// `Σ 2Aᵢ` over the same triangles.
+    pub submerged_area2: Vector3<T>,
+    /// `Σ (ab − apex)·2A_P` over the submerged parts of the cut triangles.
+    pub cut_volume6: T,
     /// `Improved` only: the clipped parts of the waterline triangles, about `apex`.
     pub clipped: VolumeSums<T>,
+}
+
+impl<T: Real> ExactSums<T> {
+    /// Six times the submerged volume, about `apex` (see the type's documentation).
+    fn volume6(&self, apex: &Vector3<T>) -> T {
+        self.submerged_volume6 - apex.dot(&self.submerged_area2) + self.cut_volume6
+    }
+
+    /// Six times the volume of the tetrahedra from `apex` to the fully submerged triangles:
+    /// `Improved`'s volume.
+    fn submerged_volume6_about(&self, apex: &Vector3<T>) -> T {
+        self.submerged_volume6 - apex.dot(&self.submerged_area2)
+    }
 }
 
 impl<T: Real> Sums for ExactSums<T> {
@@ -80,6 +110,9 @@ impl<T: Real> Sums for ExactSums<T> {
     fn zero() -> Self {
         ExactSums {
             exact: VolumeSums::zero(),
+            submerged_volume6: T::zero(),
+            submerged_area2: Vector3::zeros(),
+            cut_volume6: T::zero(),
             clipped: VolumeSums::zero(),
         }
     }
@@ -87,26 +120,35 @@ impl<T: Real> Sums for ExactSums<T> {
     fn merge(self, o: Self) -> Self {
         ExactSums {
             exact: self.exact.merge(o.exact),
+            submerged_volume6: self.submerged_volume6 + o.submerged_volume6,
+            submerged_area2: self.submerged_area2 + o.submerged_area2,
+            cut_volume6: self.cut_volume6 + o.cut_volume6,
             clipped: self.clipped.merge(o.clipped),
         }
     }
 }
 
-/// Sums a volume method accumulates, with the member that takes the hierarchy's stored sums of
-/// the nodes entirely under water.
+/// Sums a volume method accumulates, which take the hierarchy's stored sums of the nodes
+/// entirely under water.
 trait WithSubmergedNodes<T: Real>: Sums {
-    fn submerged_mut(&mut self) -> &mut VolumeSums<T>;
+    fn add_submerged_node(&mut self, node: &VolumeNodeSums<T>, triangle_count: u32);
 }
 
 impl<T: Real> WithSubmergedNodes<T> for VolumeSums<T> {
-    fn submerged_mut(&mut self) -> &mut VolumeSums<T> {
-        self
+    #[inline(always)]
+    fn add_submerged_node(&mut self, node: &VolumeNodeSums<T>, triangle_count: u32) {
+        self.volume6 += node.volume6;
+        self.moment24 += node.moment24;
+        self.counts.full += triangle_count as usize;
     }
 }
 
 impl<T: Real> WithSubmergedNodes<T> for ExactSums<T> {
-    fn submerged_mut(&mut self) -> &mut VolumeSums<T> {
-        &mut self.exact
+    #[inline(always)]
+    fn add_submerged_node(&mut self, node: &VolumeNodeSums<T>, triangle_count: u32) {
+        self.exact.add_submerged_node(node, triangle_count);
+        self.submerged_volume6 += node.volume6;
+        self.submerged_area2 += node.area2;
     }
 }
 
@@ -143,17 +185,30 @@ impl<T: Real> Mesh<T> {
     ) -> Buoyancy<T> {
         let apex = frame.normal_local * -frame.height;
         let improved = method == Method::Improved;
-        let ExactSums { exact, clipped } =
-            self.volume_sums(frame, hierarchy, parallel, |s: &mut ExactSums<T>, i| {
-                self.exact_triangle(frame, &apex, improved, s, i)
-            });
+        let sums = self.volume_sums(frame, hierarchy, parallel, |s: &mut ExactSums<T>, i| {
+            self.exact_triangle(frame, &apex, improved, s, i)
+        });
+        let ExactSums { exact, clipped, .. } = sums;
         if !improved {
-            return self.volume_result(frame, water, exact, Vector3::zeros());
+            let volume6 = sums.volume6(&apex);
+            // The submerged volume of a closed mesh is never negative: a negative sum is the
+            // round-off of a part too thin to measure (a dip below about √(ε·M·D), `M` the
+            // size of the body and `D` the distance from `apex` to the part), so nothing is
+            // under water.
+            let sums = if volume6 < T::zero() {
+                VolumeSums {
+                    counts: exact.counts,
+                    ..VolumeSums::zero()
+                }
+            } else {
+                VolumeSums { volume6, ..exact }
+            };
+            return self.volume_result(frame, water, sums, Vector3::zeros());
         }
-        // Improved = tetrahedra from `apex` over the fully submerged triangles
-        // = the exact volume about `apex` minus the clipped parts about `apex`.
-        let volume6 = exact.volume6 - clipped.volume6;
-        // First moment about apex: Σ det·(a+b+c − 4·apex) = moment24 − 4·apex·volume6.
+        // Improved = tetrahedra from `apex` over the fully submerged triangles.
+        let volume6 = sums.submerged_volume6_about(&apex);
+        // First moment about apex: the exact volume's about `apex` minus the clipped parts',
+        // Σ det·(a+b+c − 4·apex) = moment24 − 4·apex·volume6.
         let moment24 =
             exact.moment24 - apex * (T::from_f64_lossy(4.0) * exact.volume6) - clipped.moment24;
         let sums = VolumeSums {
@@ -185,12 +240,7 @@ impl<T: Real> Mesh<T> {
                 Visit::SubmergedNode {
                     node,
                     triangle_count,
-                } => {
-                    let (s, node) = (sums.submerged_mut(), self.node_sums.volume(node));
-                    s.volume6 += node.volume6;
-                    s.moment24 += node.moment24;
-                    s.counts.full += triangle_count as usize;
-                }
+                } => sums.add_submerged_node(self.node_sums.volume(node), triangle_count),
                 Visit::CrossedLeaf { triangles } => {
                     for i in triangles {
                         triangle(sums, i);
@@ -223,19 +273,26 @@ impl<T: Real> Mesh<T> {
         frame: &Frame<T>,
         apex: &Vector3<T>,
         improved: bool,
-        ExactSums { exact, clipped }: &mut ExactSums<T>,
+        sums: &mut ExactSums<T>,
         i: usize,
     ) {
         let v = self.corners(i);
         let h = frame.heights(&v);
+        let exact = &mut sums.exact;
         match classify(&h) {
             TriangleClass::Submerged => {
                 exact.volume6 += self.tetra_volume6[i];
                 exact.moment24 += self.tetra_moment24[i];
                 exact.counts.full += 1;
+                let zero = T::zero();
+                if h[0] != zero || h[1] != zero || h[2] != zero {
+                    // About `apex` a triangle lying in the surface adds nothing.
+                    sums.submerged_volume6 += self.tetra_volume6[i];
+                    sums.submerged_area2 += (v[1] - v[0]).cross(&(v[2] - v[0]));
+                }
                 // An edge lying in the surface bounds the cap too, unless the neighbour across
                 // it is submerged and cancels it.
-                let zero = T::zero();
+                let exact = &mut sums.exact;
                 if h[0] == zero || h[1] == zero || h[2] == zero {
                     for k in 0..3 {
                         let j = (k + 1) % 3;
@@ -261,6 +318,14 @@ impl<T: Real> Mesh<T> {
                     ca,
                     ..
                 } = cut_at_waterline(v, h);
+                // The submerged part's area vector, (a, ab, ca) or the quadrilateral
+                // (ab, b, c, ca) from its diagonals, and its tetrahedron from `apex`.
+                let area2 = if odd_is_below {
+                    (ab - a).cross(&(ca - a))
+                } else {
+                    (c - ab).cross(&(ca - b))
+                };
+                sums.cut_volume6 += (ab - apex).dot(&area2);
                 let x = ab.cross(&ca);
                 let (part, cap) = (a.dot(&x), apex.dot(&x));
                 let rim = ab + ca;
@@ -274,6 +339,7 @@ impl<T: Real> Mesh<T> {
                     exact.moment24 += self.tetra_moment24[i] - moment24;
                 }
                 if improved {
+                    let clipped = &mut sums.clipped;
                     // Improved leaves the submerged part out; remember it about `apex`:
                     // (a, ab, ca), or the whole triangle minus it.
                     let (a, b, c, ab, ca) = (a - apex, b - apex, c - apex, ab - apex, ca - apex);

@@ -7,8 +7,8 @@
 
 mod common;
 
-use buoyancy::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy::{Buoyancy, Mesh, Method, Pose, Traversal, Water, shape};
+use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
+use buoyancy_core::{Buoyancy, Mesh, Method, Pose, Traversal, Water, shape};
 use common::{all_meshes, assert_close, assert_close_v, pose, pose_at_height, reference};
 use proptest::prelude::*;
 use proptest::sample::Index;

@@ -6,8 +6,8 @@ mod common;
 
 use std::f64::consts::PI;
 
-use buoyancy::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy::{Mesh, Method, Pose, Water, shape};
+use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
+use buoyancy_core::{Mesh, Method, Pose, Water, shape};
 use common::{assert_close, assert_close_v, reference};
 
 /// ρ = g = 1, y up, surface at y = 0.

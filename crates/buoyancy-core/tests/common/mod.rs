@@ -2,46 +2,19 @@
 //! reference computation of buoyancy.
 #![allow(dead_code)]
 
-use std::path::PathBuf;
 use std::sync::OnceLock;
 
-use buoyancy::nalgebra::{Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
-use buoyancy::{Mesh, Pose, Water};
+use buoyancy_core::nalgebra::{Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
+use buoyancy_core::{Mesh, Pose, Water};
 
-/// The folder of the shared test meshes: `$BUOYANCY_MESHES`, else `../shared/meshes` beside the
-/// repository. `None` (with a message on stderr) when it does not exist.
-pub fn meshes_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("BUOYANCY_MESHES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes"));
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "note: test meshes not found at {} (set BUOYANCY_MESHES); skipping the checks on the shared meshes, procedural meshes are still tested",
-            dir.display()
-        );
-        None
-    }
-}
-
-/// The shared meshes that exist, by file name, loaded once per test binary.
+/// The sample meshes that exist, by file name, loaded once per test binary.
 pub fn shared_meshes() -> &'static [(String, Mesh<f64>)] {
     static MESHES: OnceLock<Vec<(String, Mesh<f64>)>> = OnceLock::new();
     MESHES.get_or_init(|| {
-        let Some(dir) = meshes_dir() else {
-            return Vec::new();
-        };
-        let mut names: Vec<_> = std::fs::read_dir(&dir)
-            .expect("readable mesh folder")
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.extension().is_some_and(|e| e == "obj"))
-            .collect();
-        names.sort();
-        names
+        buoyancy_samples::obj_files()
             .into_iter()
             .map(|path| {
-                let (v, t) = buoyancy::io::load::<f64>(&path).expect("parsable mesh");
+                let (v, t) = buoyancy_core::io::load::<f64>(&path).expect("parsable mesh");
                 let name = path.file_name().unwrap().to_string_lossy().into_owned();
                 let mesh = Mesh::new(v, t).unwrap_or_else(|e| panic!("{name}: {e}"));
                 (name, mesh)
@@ -54,7 +27,7 @@ pub fn shared_meshes() -> &'static [(String, Mesh<f64>)] {
 pub fn procedural_meshes() -> &'static [(String, Mesh<f64>)] {
     static MESHES: OnceLock<Vec<(String, Mesh<f64>)>> = OnceLock::new();
     MESHES.get_or_init(|| {
-        use buoyancy::shape;
+        use buoyancy_core::shape;
         let build = |(v, t): shape::Shape<f64>| Mesh::new(v, t).unwrap();
         vec![
             ("cube".into(), build(shape::cube(3).unwrap())),
