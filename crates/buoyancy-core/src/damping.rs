@@ -42,8 +42,10 @@
 //! sphere, and the waves a rolling hull radiates.
 //!
 //! The total is `F = Σ F_i`, `τ = Σ τ_i + τ_ω`, in the world frame, in N and N·m, the torque
-//! about `c`. The model is explicit: an engine integrating it over a step `dt` should keep the
-//! impulse `F·dt` below the momentum it damps (the rapier adapter clamps it so).
+//! about `c`. The model is explicit: applied unchanged over a step `dt`, a large damping rate
+//! overshoots (the impulse `F·dt` exceeds the momentum it damps). An engine should integrate it
+//! implicitly; the rapier adapter applies it semi-implicitly, `(W − α·dt·G)/(1 + α·dt)` with `α`
+//! the damping rate and `G` the step's other forces (see `buoyancy-rapier`).
 
 use nalgebra::{Point3, Vector3};
 

@@ -168,7 +168,7 @@ fn write_zero_volume(f: &mut fmt::Formatter<'_>, volume: f64, scale: f64) -> fmt
         )
     } else if scale == 0.0 {
         f.write_str(
-            "the mesh encloses no volume: it is flat (every triangle lies in one plane); check \
+            "the mesh encloses no volume: it is flat (its triangles span no volume); check \
              that no coordinate was dropped or scaled to zero",
         )
     } else {

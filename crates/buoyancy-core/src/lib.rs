@@ -2,15 +2,19 @@
 //!
 //! This crate implements the five methods of Fábián's *Approximate and exact buoyancy
 //! calculation for real-time floating simulation of meshes* against a flat water plane of any
-//! orientation, with the torque of the pressure field integrated exactly:
+//! orientation, with the torque of the pressure field integrated exactly: [`Method`] lists them.
+//! [`Mesh::buoyancy`] evaluates one, [`Mesh::damping`] the hydrodynamic damping that lets
+//! floating bodies settle, [`io`] reads OBJ, STL and PLY files and [`shape`] builds procedural
+//! meshes.
 //!
-//! | [`Method`] | triangles it sums | exact for a flat plane |
-//! |---|---|---|
-//! | [`Method::Fast`] | fully submerged, volume elements precomputed about the mesh centroid | no |
-//! | [`Method::Improved`] | fully submerged, reference point on the water plane | no |
-//! | [`Method::Exact`] | fully submerged + clipped waterline triangles, reference on the plane | yes |
-//! | [`Method::FastSurface`] | pressure on fully submerged triangles | no |
-//! | [`Method::ExactSurface`] | pressure on fully submerged + clipped waterline triangles | yes |
+//! # Features
+//! * `std` (default): [`io::load`] (reading files), `std::error::Error` for [`Error`] (through
+//!   `core::error::Error`, which it implements without `std` too) and nalgebra's `std`.
+//! * `rayon`: `Mesh::par_buoyancy` and `Mesh::par_buoyancy_with`, which split one
+//!   evaluation's work across rayon's thread pool, bit-identical to the serial result.
+//!
+//! Without default features the crate is `no_std` (it needs `alloc`): everything but reading
+//! files works, e.g. on `wasm32-unknown-unknown`.
 //!
 //! # Frames and units
 //! A [`Mesh`] lives in its own *mesh frame* (local space). A [`Pose`] maps mesh space to world

@@ -92,10 +92,11 @@ impl<T: Real> Mesh<T> {
     /// clockwise: inward winding is detected and fixed).
     ///
     /// # Errors
-    /// [`Error::EmptyMesh`], [`Error::TooManyVertices`], [`Error::NonFiniteVertex`],
-    /// [`Error::IndexOutOfRange`], [`Error::RepeatedIndex`], [`Error::OpenEdge`],
-    /// [`Error::NonManifoldEdge`], [`Error::InconsistentOrientation`] and
-    /// [`Error::ZeroVolume`], in that order of checking.
+    /// [`Error::EmptyMesh`] for no triangles; [`Error::TooManyVertices`] beyond `u32` indices;
+    /// [`Error::InvalidMesh`] with every problem found at once (non-finite vertices, indices out
+    /// of range, repeated indices, open, non-manifold and inconsistently oriented edges: the
+    /// count of each, the first culprits and the usual remedy, see [`MeshDefects`](crate::MeshDefects));
+    /// [`Error::ZeroVolume`] for a closed mesh that encloses no volume.
     pub fn new(vertices: Vec<Point3<T>>, triangles: Vec<[u32; 3]>) -> Result<Self, Error> {
         let mut triangles = triangles;
         validation::validate(&vertices, &triangles)?;

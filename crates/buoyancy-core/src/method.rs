@@ -5,15 +5,16 @@ use crate::Error;
 
 /// How the buoyancy of a mesh is computed: the five methods of the paper.
 ///
-/// | method | triangles it sums | exact for a flat plane | armadillo (30,000 triangles) |
-/// |---|---|---|---|
-/// | `Fast` | fully submerged; volume elements precomputed about the mesh centroid | no | 17.7 µs |
-/// | `Improved` | fully submerged; reference point on the water plane | no | 27.2 µs |
-/// | `Exact` | `Fast` + the submerged part of every waterline triangle + the cap | yes | 25.1 µs |
-/// | `FastSurface` | pressure over fully submerged triangles | no | 178 µs |
-/// | `ExactSurface` | `FastSurface` + the submerged part of every waterline triangle | yes | 187 µs |
+/// | method | what it sums | exact for a flat plane |
+/// |---|---|---|
+/// | `Fast` | tetrahedra from the mesh centroid to the fully submerged triangles, precomputed | no: misses the cone from the centroid to the waterline, whatever the resolution |
+/// | `Improved` | tetrahedra from a point on the water plane to the fully submerged triangles | no: misses the waterline triangles; the error shrinks with the resolution |
+/// | `Exact` | `Fast`'s tetrahedra + the submerged part of each waterline triangle (clipped) + the cap on the water plane | yes |
+/// | `FastSurface` | the pressure `ρ·g·depth` over the fully submerged triangles | no |
+/// | `ExactSurface` | the pressure over the exact wetted surface (waterline triangles clipped) | yes |
 ///
-/// (Mean per evaluation over the paper's 100 poses, f64, one thread, [`Traversal::Auto`](crate::Traversal).)
+/// Their speed on the paper's models is measured in `benches/RESULTS.md`
+/// (`cargo bench --bench table`).
 ///
 /// The volume methods apply the divergence theorem: the submerged volume is a sum of signed
 /// tetrahedra `V_i(o) = (a−o)·((b−o)×(c−o))/6`. With the reference point `o` on the water plane
