@@ -1,7 +1,6 @@
 //! What the benchmarks share: the paper's models and its timing protocol.
 #![allow(dead_code)]
 
-use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use buoyancy::nalgebra::{Translation3, UnitQuaternion, Vector3};
@@ -13,13 +12,6 @@ pub struct Model<T: Real> {
     pub name: String,
     pub paper_ms: Option<[f64; 5]>,
     pub mesh: Mesh<T>,
-}
-
-fn meshes_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("BUOYANCY_MESHES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes"));
-    dir.is_dir().then_some(dir)
 }
 
 /// The paper's three models from the shared meshes, a procedural torus knot of the same size
@@ -36,7 +28,7 @@ pub fn models<T: Real>(large: bool) -> Vec<Model<T>> {
         ("bunny.obj", "bunny", [0.23, 0.69, 0.75, 0.76, 0.90]),
         ("armadillo.obj", "armadillo", [0.98, 2.96, 3.05, 3.45, 3.94]),
     ];
-    match meshes_dir() {
+    match buoyancy_samples::meshes_dir() {
         Some(dir) => {
             for (file, name, ms) in table {
                 let (v, t) = buoyancy::io::load::<T>(dir.join(file)).expect("readable mesh");
@@ -49,9 +41,7 @@ pub fn models<T: Real>(large: bool) -> Vec<Model<T>> {
             }
         }
         None => {
-            eprintln!(
-                "note: ../shared/meshes not found (set BUOYANCY_MESHES); benchmarking a procedural torus knot only"
-            );
+            eprintln!("note: benchmarking a procedural torus knot only");
             let mesh = build(shape::torus_knot(2, 3, 1.0, 0.25, 80, 11).unwrap());
             models.push(Model {
                 name: "procedural torus knot 1760".into(),
