@@ -17,9 +17,7 @@ pub const MESHES_VARIABLE: &str = "BUOYANCY_MESHES";
 pub fn meshes_location() -> PathBuf {
     std::env::var_os(MESHES_VARIABLE)
         .map(PathBuf::from)
-        .unwrap_or_else(|| {
-            PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/meshes")
-        })
+        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/meshes"))
 }
 
 /// The folder of the sample meshes, or `None` (saying where it looked, on stderr) when it does
