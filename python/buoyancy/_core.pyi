@@ -10,6 +10,14 @@ import numpy.typing as npt
 # ("ExactSurface", "exact-surface").
 _MethodName: TypeAlias = Literal["fast", "improved", "exact", "fast_surface", "exact_surface"]
 _TraversalName: TypeAlias = Literal["auto", "scan", "hierarchy"]
+_DefectKind: TypeAlias = Literal[
+    "non_finite_vertex",
+    "index_out_of_range",
+    "repeated_index",
+    "open_edge",
+    "non_manifold_edge",
+    "inconsistent_orientation",
+]
 _FloatArray: TypeAlias = npt.NDArray[np.float64]
 _IntArray: TypeAlias = npt.NDArray[np.int64]
 
@@ -22,6 +30,7 @@ __all__ = [
     "Damping",
     "DampingCoefficients",
     "Mesh",
+    "MeshDefect",
     "MeshError",
     "Water",
     "cube",
@@ -36,7 +45,23 @@ QUATERNION_TOLERANCE: Final[float]
 MATRIX_TOLERANCE: Final[float]
 
 class MeshError(ValueError):
-    """A mesh that cannot be used; the message names the vertex, triangle or edge at fault."""
+    """A mesh that cannot be used; the message names the vertices, triangles or edges at fault."""
+
+    defects: tuple[MeshDefect, ...]
+    triangle_soup: bool
+    coincident_vertices: int
+    one_based_indices: bool
+
+@final
+class MeshDefect:
+    """One kind of problem found in a mesh, with its count and first culprits (zero-based)."""
+
+    @property
+    def kind(self) -> _DefectKind: ...
+    @property
+    def count(self) -> int: ...
+    @property
+    def examples(self) -> tuple[dict[str, int | tuple[int, ...]], ...]: ...
 
 class _HasVerticesAndFaces(Protocol):
     """A ``trimesh.Trimesh``, or anything with ``vertices`` and ``faces`` arrays."""

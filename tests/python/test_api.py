@@ -456,6 +456,7 @@ def test_docstring_examples() -> None:
         "Mesh.scaled": buoyancy.Mesh.scaled,
         "Mesh.translated": buoyancy.Mesh.translated,
         "Buoyancy": buoyancy.Buoyancy,
+        "MeshDefect": buoyancy.MeshDefect,
         "load": buoyancy.load,
         "cube": buoyancy.shapes.cube,
         "uv_sphere": buoyancy.shapes.uv_sphere,
@@ -501,6 +502,7 @@ def test_stubs_match_the_module() -> None:
         "Damping",
         "DampingCoefficients",
         "MeshError",
+        "MeshDefect",
         "load",
         "cube",
         "uv_sphere",
@@ -516,6 +518,7 @@ def test_stubs_match_the_module() -> None:
         buoyancy.BuoyancyBatch,
         buoyancy.Damping,
         buoyancy.DampingCoefficients,
+        buoyancy.MeshDefect,
     ):
         public = {n for n in dir(cls) if not n.startswith("_")}
         for n in public:

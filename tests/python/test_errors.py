@@ -49,6 +49,53 @@ def test_mesh_errors(vertices, faces, match: str) -> None:  # type: ignore[no-un
         buoyancy.Mesh(vertices, faces)
 
 
+def test_mesh_error_carries_the_defects() -> None:
+    # A tetrahedron with a face missing, a repeated index and a NaN vertex: every kind counted.
+    vertices = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (NAN, 0, 0)]
+    with pytest.raises(buoyancy.MeshError) as error:
+        buoyancy.Mesh(vertices, [(0, 2, 1), (0, 1, 3), (0, 3, 3)])
+    defects = {d.kind: d for d in error.value.defects}
+    assert list(defects) == ["non_finite_vertex", "repeated_index", "open_edge"]
+    assert (defects["non_finite_vertex"].count, defects["non_finite_vertex"].examples) == (1, ({"vertex": 4},))
+    assert defects["repeated_index"].examples == ({"triangle": 2, "indices": (0, 3, 3)},)
+    assert defects["open_edge"].count == 4
+    assert defects["open_edge"].examples[0] == {"edge": (0, 2), "triangles": (0,)}
+    assert all(isinstance(d, buoyancy.MeshDefect) for d in error.value.defects)
+    assert repr(defects["repeated_index"]) == (
+        "MeshDefect(kind='repeated_index', count=1, examples=({'triangle': 2, 'indices': (0, 3, 3)},))"
+    )
+    assert not error.value.triangle_soup and not error.value.one_based_indices
+
+
+def test_mesh_error_of_a_triangle_soup_and_of_one_based_indices() -> None:
+    cube = shapes.cube()
+    soup_vertices = cube.vertices[cube.faces].reshape(-1, 3)  # every triangle its own 3 vertices
+    soup_faces = np.arange(3 * cube.n_triangles).reshape(-1, 3)
+    with pytest.raises(buoyancy.MeshError, match="weld") as error:
+        buoyancy.Mesh(soup_vertices, soup_faces)
+    assert error.value.triangle_soup and error.value.coincident_vertices > 0
+    assert [(d.kind, d.count) for d in error.value.defects] == [("open_edge", 36)]
+    assert len(error.value.defects[0].examples) == 5
+    with pytest.raises(buoyancy.MeshError) as error:
+        buoyancy.Mesh(TET_V, np.array(TET_F) + 1)
+    assert error.value.one_based_indices
+    out_of_range = error.value.defects[0]
+    assert (out_of_range.kind, out_of_range.count) == ("index_out_of_range", 3)
+    assert out_of_range.examples == tuple({"triangle": t, "index": 4} for t in (1, 2, 3))
+
+
+def test_mesh_error_without_defects_of_the_triangles() -> None:
+    for vertices, faces in ((TET_V, []), (np.zeros((4, 2)), TET_F), (TET_V, [(0, 1, 2), (0, 2, 1)])):
+        with pytest.raises(buoyancy.MeshError) as error:
+            buoyancy.Mesh(vertices, faces)
+        assert error.value.defects == ()
+        assert (error.value.triangle_soup, error.value.coincident_vertices, error.value.one_based_indices) == (
+            False,
+            0,
+            False,
+        )
+
+
 @pytest.mark.parametrize(
     "kwargs, match",
     [

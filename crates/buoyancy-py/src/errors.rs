@@ -16,7 +16,7 @@ create_exception!(
     buoyancy,
     MeshError,
     PyValueError,
-    "A mesh that cannot be used: not a closed, consistently oriented 2-manifold, bad vertex or face\narrays, or a mesh file that cannot be parsed. The message names the vertex, triangle or edge."
+    "A mesh that cannot be used: not a closed, consistently oriented 2-manifold, bad vertex or face\narrays, or a mesh file that cannot be parsed. The message names the vertices, triangles or edges\nat fault and what usually fixes them.\n\nAttributes\n----------\ndefects : tuple of MeshDefect\n    Each kind of problem of the triangles, with its count and first culprits; empty when the\n    problem is not there (an empty or flat mesh, arrays of the wrong shape, a file that cannot\n    be parsed).\ntriangle_soup : bool\n    Whether no two triangles share a vertex, as STL files store a mesh: weld the vertices.\ncoincident_vertices : int\n    How many used vertices sit exactly where a vertex of lower index does (counted when the\n    mesh has open edges): welding them closes the edges they split.\none_based_indices : bool\n    Whether the indices look one-based (as in an OBJ file): subtract 1 from every index."
 );
 
 /// `ValueError("{name}: {message}")`: an argument of the right type with a wrong value.
@@ -45,7 +45,8 @@ pub fn type_name(obj: &Bound<'_, PyAny>) -> String {
 /// The Python exception for a core error:
 ///
 /// * a parameter out of range (shape, water, damping) is a `ValueError` naming the parameter;
-/// * a mesh that cannot be used, or a file that cannot be parsed, is a [`MeshError`];
+/// * a mesh that cannot be used, or a file that cannot be parsed, is a [`MeshError`], with the
+///   core's report of a broken mesh as its attributes (`defects`, …);
 /// * a file that cannot be read is the `OSError` subclass of its kind (`FileNotFoundError`,
 ///   `PermissionError`, `IsADirectoryError`, else `OSError`), and one of an unknown format a
 ///   `ValueError`;
@@ -64,9 +65,14 @@ pub fn to_py(e: Error, argument: Option<&str>) -> PyErr {
         None => e.to_string(),
     };
     match e {
+        Error::InvalidMesh(defects) => {
+            let error = MeshError::new_err(message);
+            Python::attach(|py| {
+                crate::defects::describe(error.value(py), &defects).map_or_else(|e| e, |()| error)
+            })
+        }
         Error::EmptyMesh
         | Error::TooManyVertices { .. }
-        | Error::InvalidMesh(_)
         | Error::ZeroVolume { .. }
         | Error::Parse { .. } => MeshError::new_err(message),
         Error::Io { kind, .. } => match kind {
