@@ -205,6 +205,28 @@ def test_load_obj_and_stl(tmp_path: pathlib.Path) -> None:
     assert binary.volume == pytest.approx(knot.volume, rel=1e-5)
 
 
+def test_load_ply(tmp_path: pathlib.Path) -> None:
+    knot = shapes.torus_knot()
+    header = [
+        "ply",
+        "format ascii 1.0",
+        f"element vertex {knot.n_vertices}",
+        "property double x",
+        "property double y",
+        "property double z",
+        f"element face {knot.n_triangles}",
+        "property list uchar int vertex_indices",
+        "end_header",
+    ]
+    body = [f"{float(x)!r} {float(y)!r} {float(z)!r}" for x, y, z in knot.vertices]
+    body += [f"3 {a} {b} {c}" for a, b, c in knot.faces]
+    (tmp_path / "knot.PLY").write_text("\n".join(header + body) + "\n")
+    mesh = buoyancy.load(tmp_path / "knot.PLY")
+    np.testing.assert_array_equal(mesh.vertices, knot.vertices)
+    np.testing.assert_array_equal(mesh.faces, knot.faces)
+    assert mesh == knot
+
+
 def test_sample_meshes() -> None:
     armadillo = buoyancy.load(require_sample_mesh("armadillo.obj"))
     assert armadillo.was_reoriented and armadillo.volume == pytest.approx(1.902, rel=1e-3)

@@ -7,8 +7,9 @@ use pyo3::prelude::*;
 use crate::errors::{to_py, type_error};
 use crate::mesh::PyMesh;
 
-/// Reads a closed triangle mesh from a file, its format chosen by the extension (as
-/// ``buoyancy-core``'s ``io::load`` reads them: ``.obj``, ``.stl`` ASCII or binary, …).
+/// Reads a closed triangle mesh from a file, its format chosen by the extension
+/// (case-insensitive): ``.obj`` (Wavefront), ``.stl`` (ASCII or binary) or ``.ply`` (ASCII or
+/// binary, either byte order; polygons are split into triangles).
 ///
 /// Parameters
 /// ----------
