@@ -126,7 +126,7 @@ fn tilt_of_y_axis(rotation: &Rotation) -> f64 {
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let started = Instant::now();
     let mut world = PhysicsWorld::default();
-    let mut water = FloatingBodies::new(world.gravity);
+    let mut water = FloatingBodies::new(world.gravity)?;
     let mut bodies: Vec<Body> = Vec::new();
 
     let (v, t) = shape::cube::<f64>(1)?;

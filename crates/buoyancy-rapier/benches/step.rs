@@ -44,7 +44,7 @@ fn bunny() -> (String, Mesh<f64>) {
 fn step(c: &mut Criterion) {
     let (name, mesh) = bunny();
     let mut world = PhysicsWorld::default();
-    let mut water = FloatingBodies::new(world.gravity);
+    let mut water = FloatingBodies::new(world.gravity).unwrap();
     let vertices: Vec<Vector> = (0..mesh.vertex_count())
         .map(|i| {
             let p = mesh.vertex(i);

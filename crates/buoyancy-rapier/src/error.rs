@@ -1,11 +1,16 @@
 use core::fmt;
 
+use rapier3d::math::Vector;
 use rapier3d::prelude::{ColliderHandle, RigidBodyHandle};
 
-/// Everything that can go wrong when registering a body with [`FloatingBodies`](crate::FloatingBodies).
+/// Everything that can go wrong when creating [`FloatingBodies`](crate::FloatingBodies) or
+/// registering a body with it.
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub enum Error {
+    /// The gravity given to [`FloatingBodies::new`](crate::FloatingBodies::new) has a NaN or
+    /// infinite component.
+    InvalidGravity(Vector),
     /// The rigid body handle is not in the `RigidBodySet`.
     UnknownBody(RigidBodyHandle),
     /// The collider handle is not in the `ColliderSet`.
@@ -42,6 +47,12 @@ pub enum Error {
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            Error::InvalidGravity(g) => write!(
+                f,
+                "gravity ({}, {}, {}) m/s² has a NaN or infinite component: pass the world's \
+                 finite gravity vector (e.g. PhysicsWorld::gravity, (0, −9.81, 0))",
+                g.x, g.y, g.z
+            ),
             Error::UnknownBody(h) => write!(f, "rigid body {h:?} is not in the RigidBodySet"),
             Error::UnknownCollider(h) => write!(f, "collider {h:?} is not in the ColliderSet"),
             Error::NotAttached { collider, body } => {

@@ -7,6 +7,9 @@ use buoyancy_core::{Mesh, shape};
 use buoyancy_rapier::{FloatOptions, FloatingBodies};
 use rapier3d::prelude::*;
 
+/// The step of [`Pool`]'s world, s.
+pub const DT: f32 = 1.0 / 60.0;
+
 /// A rapier world (gravity −9.81 y, 60 Hz) with water at y = 0.
 pub struct Pool {
     pub world: PhysicsWorld,
@@ -16,7 +19,7 @@ pub struct Pool {
 impl Pool {
     pub fn new() -> Self {
         let world = PhysicsWorld::default();
-        let water = FloatingBodies::new(world.gravity);
+        let water = FloatingBodies::new(world.gravity).unwrap();
         Pool { world, water }
     }
 
@@ -58,6 +61,28 @@ impl Pool {
 
     pub fn body(&self, h: RigidBodyHandle) -> &RigidBody {
         &self.world.bodies[h]
+    }
+
+    /// A 1 m cube of density 500 kg/m³ centered at height `y`: it floats half submerged, its
+    /// center at the surface.
+    pub fn half_density_cube(&mut self, y: f32) -> RigidBodyHandle {
+        self.add(
+            RigidBodyBuilder::dynamic().translation(Vector::new(0.0, y, 0.0)),
+            ColliderBuilder::cuboid(0.5, 0.5, 0.5).density(500.0),
+        )
+    }
+
+    /// The application's own force and torque on `h`: rapier's stored user force and torque
+    /// minus what the adapter reports it applied.
+    pub fn own_wrench(&self, h: RigidBodyHandle) -> (Vector, Vector) {
+        let r = self.water.report(h).unwrap();
+        let f = (r.buoyancy_force + r.damping_force).cast::<f32>();
+        let t = (r.buoyancy_torque + r.damping_torque).cast::<f32>();
+        let rb = self.body(h);
+        (
+            rb.user_force() - Vector::new(f.x, f.y, f.z),
+            rb.user_torque() - Vector::new(t.x, t.y, t.z),
+        )
     }
 
     /// Checks the equilibrium conditions: submerged volume = m/ρ within 0.5 %, the center of

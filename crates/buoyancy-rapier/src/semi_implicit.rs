@@ -1,0 +1,216 @@
+//! The damping made semi-implicit (see [Stability](crate#stability)): the damping wrench of the
+//! core taken at the end of the step, so that light bodies and bodies dropped fast neither
+//! overshoot nor oscillate.
+
+use buoyancy_core::nalgebra::{Matrix3, Vector3};
+use rapier3d::prelude::RigidBody;
+
+use crate::convert::vector_to_nalgebra;
+use crate::wrench::Wrench;
+
+/// The generalized mass `M` of a rigid body, `f64`, world frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct GeneralizedMass {
+    /// Per-axis inverse mass, 1/kg (zero on locked translation axes).
+    pub inv_mass: Vector3<f64>,
+    /// World inverse inertia, 1/(kg·m²) (zero rows and columns on locked rotation axes).
+    pub inv_inertia: Matrix3<f64>,
+    /// World inertia, kg·m² (the rows of locked rotation axes are meaningless: their angular
+    /// velocity is zero).
+    pub inertia: Matrix3<f64>,
+}
+
+impl GeneralizedMass {
+    /// rapier's effective mass properties of `rb`.
+    pub fn of(rb: &RigidBody) -> Self {
+        let props = rb.mass_properties();
+        let i = &props.effective_world_inv_inertia;
+        let inv_inertia = Matrix3::new(
+            i.m11, i.m12, i.m13, i.m12, i.m22, i.m23, i.m13, i.m23, i.m33,
+        )
+        .cast::<f64>();
+        let mut invertible = inv_inertia;
+        for k in 0..3 {
+            if invertible[(k, k)] == 0.0 {
+                invertible[(k, k)] = 1.0;
+            }
+        }
+        let inertia = invertible.try_inverse().unwrap_or_else(Matrix3::zeros);
+        GeneralizedMass {
+            inv_mass: vector_to_nalgebra(props.effective_inv_mass),
+            inv_inertia,
+            inertia,
+        }
+    }
+}
+
+/// The damping wrench to apply over a step of `dt` seconds.
+///
+/// About the current velocity `q̇ = (v − v_water, ω)` (`relative_velocity`, m/s, and `omega`,
+/// rad/s), the core's damping wrench `W = (F, τ)` is linearised as `W − α·M·Δq̇`, with `α`
+/// (1/s) the damping rate in the metric of the generalized mass `M`,
+///
+/// ```text
+/// α = √(W·M⁻¹W / q̇·M·q̇)        (locked axes left out),
+/// ```
+///
+/// and solved for the end of the step, given the step's other forces `G` (`others`: buoyancy,
+/// gravity, the application's own forces; the components on locked translation axes are left
+/// out):
+///
+/// ```text
+/// W' = (W − α·dt·G) / (1 + α·dt).
+/// ```
+///
+/// `W` is returned as it is when it or the velocity is zero, or `dt` is not positive. Torques
+/// are about the body's center of mass.
+pub(crate) fn semi_implicit_damping(
+    damping: Wrench,
+    others: Wrench,
+    relative_velocity: &Vector3<f64>,
+    omega: &Vector3<f64>,
+    mass: &GeneralizedMass,
+    dt: f64,
+) -> Wrench {
+    let inv_mass = &mass.inv_mass;
+    // W·M⁻¹W and q̇·M·q̇.
+    let wrench_norm2 = damping.force.dot(&inv_mass.component_mul(&damping.force))
+        + damping.torque.dot(&(mass.inv_inertia * damping.torque));
+    let linear_momentum_norm2: f64 = (0..3)
+        .filter(|&i| inv_mass[i] > 0.0)
+        .map(|i| relative_velocity[i] * relative_velocity[i] / inv_mass[i])
+        .sum();
+    let velocity_norm2 = linear_momentum_norm2 + omega.dot(&(mass.inertia * omega));
+    let rate = if wrench_norm2 > 0.0 && velocity_norm2 > 0.0 {
+        (wrench_norm2 / velocity_norm2).sqrt()
+    } else {
+        0.0
+    };
+    if !(rate > 0.0 && dt > 0.0) {
+        return damping;
+    }
+    let mut other_force = others.force;
+    for i in 0..3 {
+        if inv_mass[i] == 0.0 {
+            other_force[i] = 0.0;
+        }
+    }
+    let h = rate * dt;
+    Wrench {
+        force: (damping.force - other_force * h) / (1.0 + h),
+        torque: (damping.torque - others.torque * h) / (1.0 + h),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A unit mass and inertia, nothing locked.
+    fn unit_mass() -> GeneralizedMass {
+        GeneralizedMass {
+            inv_mass: Vector3::repeat(1.0),
+            inv_inertia: Matrix3::identity(),
+            inertia: Matrix3::identity(),
+        }
+    }
+
+    #[test]
+    fn balanced_forces_scale_the_whole_wrench_by_one_factor() {
+        // Linear drag −c·v with c = 4 on a unit mass: α = 4; G = 0 gives W/(1 + α·dt).
+        let velocity = Vector3::new(0.5, 0.0, 0.0);
+        let damping = Wrench {
+            force: velocity * -4.0,
+            torque: Vector3::new(0.0, 0.0, -1.0),
+        };
+        let zero = Wrench {
+            force: Vector3::zeros(),
+            torque: Vector3::zeros(),
+        };
+        let omega = Vector3::new(0.0, 0.0, 0.25);
+        let solved = semi_implicit_damping(damping, zero, &velocity, &omega, &unit_mass(), 0.1);
+        let rate = (damping.force.norm_squared() + damping.torque.norm_squared()).sqrt()
+            / (velocity.norm_squared() + omega.norm_squared()).sqrt();
+        let factor = 1.0 / (1.0 + rate * 0.1);
+        assert!((solved.force - damping.force * factor).norm() < 1e-15);
+        assert!((solved.torque - damping.torque * factor).norm() < 1e-15);
+    }
+
+    #[test]
+    fn terminal_velocity_is_a_fixed_point() {
+        // At the terminal velocity the drag balances the other forces (W = −G): W' = W.
+        let velocity = Vector3::new(0.0, -2.0, 0.0);
+        let damping = Wrench {
+            force: Vector3::new(0.0, 30.0, 0.0),
+            torque: Vector3::zeros(),
+        };
+        let others = Wrench {
+            force: -damping.force,
+            torque: Vector3::zeros(),
+        };
+        let solved = semi_implicit_damping(
+            damping,
+            others,
+            &velocity,
+            &Vector3::zeros(),
+            &unit_mass(),
+            1.0 / 60.0,
+        );
+        assert!((solved.force - damping.force).norm() < 1e-12, "{solved:?}");
+    }
+
+    #[test]
+    fn locked_axes_take_no_part() {
+        // Translation along y locked: its velocity and other force do not enter.
+        let mass = GeneralizedMass {
+            inv_mass: Vector3::new(1.0, 0.0, 1.0),
+            ..unit_mass()
+        };
+        let damping = Wrench {
+            force: Vector3::new(-2.0, 0.0, 0.0),
+            torque: Vector3::zeros(),
+        };
+        let others = Wrench {
+            force: Vector3::new(0.0, -1000.0, 0.0),
+            torque: Vector3::zeros(),
+        };
+        let velocity = Vector3::new(1.0, 50.0, 0.0);
+        let solved =
+            semi_implicit_damping(damping, others, &velocity, &Vector3::zeros(), &mass, 0.5);
+        // α = |F| / |v_x| = 2: W' = W / (1 + 1).
+        assert!(
+            (solved.force - Vector3::new(-1.0, 0.0, 0.0)).norm() < 1e-15,
+            "{solved:?}"
+        );
+    }
+
+    #[test]
+    fn no_motion_or_no_step_leaves_the_wrench() {
+        let damping = Wrench {
+            force: Vector3::new(1.0, 2.0, 3.0),
+            torque: Vector3::new(-1.0, 0.0, 0.5),
+        };
+        let others = Wrench {
+            force: Vector3::new(0.0, -9.81, 0.0),
+            torque: Vector3::zeros(),
+        };
+        let at_rest = semi_implicit_damping(
+            damping,
+            others,
+            &Vector3::zeros(),
+            &Vector3::zeros(),
+            &unit_mass(),
+            0.1,
+        );
+        assert_eq!(at_rest, damping);
+        let no_step = semi_implicit_damping(
+            damping,
+            others,
+            &Vector3::x(),
+            &Vector3::zeros(),
+            &unit_mass(),
+            0.0,
+        );
+        assert_eq!(no_step, damping);
+    }
+}
