@@ -8,11 +8,9 @@
 //! * `w = R c + t` is the center of mass in the world frame,
 //! * `h_c = n·w − level` is its height above the surface,
 //!
-//! and the height of a vertex `x` (stored as `v = x − c`) is `h = n_l·v + h_c`. A height within
-//! its own round-off of zero (`|h| ≤ 4ε·(M + |h_c|)`, `M` the size of the mesh about its
-//! centroid, see `hierarchy`) is taken as exactly zero: such a vertex lies in the surface, for
-//! the classification of its triangles and for their cut alike, so that a body touching the
-//! water within round-off has nothing under water rather than a volume of noise. The sums are
+//! and the height of a vertex `x` (stored as `v = x − c`) is `h = n_l·v + h_c`, computed within
+//! `4ε·(M + |h_c|)` of its exact value (`M` the size of the mesh about its centroid, see
+//! `hierarchy`). The sums are
 //! taken on `v` (about the centroid) or on `v + h_c n_l` (about `o = −h_c n_l`, the projection of
 //! the centroid on the plane), both small numbers even when the body is 10⁶ m from the world
 //! origin, and rotated to the world frame once at the end.
@@ -32,8 +30,8 @@ pub(crate) struct Frame<T: Real> {
     pub(crate) center_of_mass: Point3<T>,
     /// Height of the center of mass above the surface.
     pub(crate) height: T,
-    /// Vertex heights of at most this magnitude are round-off, taken as zero.
-    round_off: T,
+    /// `4ε·(M + |h_c|)`: a bound on the round-off of every vertex height.
+    pub(crate) round_off: T,
 }
 
 impl<T: Real> Frame<T> {
@@ -70,26 +68,16 @@ impl<T: Real> Frame<T> {
         })
     }
 
-    /// Heights above the surface of vertices given relative to the centroid, mesh frame; zero
-    /// for a height within round-off of zero (see the module documentation).
+    /// Heights above the surface of vertices given relative to the centroid, mesh frame.
     /// (Written out: `array::map` does not always optimise away in this hot loop.)
     #[inline(always)]
     pub(crate) fn heights(&self, v: &[Vector3<T>; 3]) -> [T; 3] {
         let n = &self.normal_local;
         [
-            self.snap(n.dot(&v[0]) + self.height),
-            self.snap(n.dot(&v[1]) + self.height),
-            self.snap(n.dot(&v[2]) + self.height),
+            n.dot(&v[0]) + self.height,
+            n.dot(&v[1]) + self.height,
+            n.dot(&v[2]) + self.height,
         ]
-    }
-
-    #[inline(always)]
-    fn snap(&self, h: T) -> T {
-        if h.abs() <= self.round_off {
-            T::zero()
-        } else {
-            h
-        }
     }
 
     /// The projection of the center of mass onto the surface, world frame.

@@ -13,11 +13,10 @@
 //! of the points of a node's box lie in `[Σₖ min(nₖloₖ, nₖhiₖ) + h_c, Σₖ max(nₖloₖ, nₖhiₖ) + h_c]`.
 //! Computed in `T`, either end is within `4ε·(M + |h_c|)` of its exact value, and so is every
 //! vertex height the scan computes, with `M = Σₖ max(|loₖ|, |hiₖ|)` over the root's box (a bound
-//! for every node): [`Hierarchy::height_round_off`]. Vertex heights within that bound of zero
-//! are taken as zero (see `frame`). A node whose interval lies below zero by more than the
-//! margin `16ε·(M + |h_c|)` therefore has every vertex height computed below `−4ε·(M + |h_c|)`:
-//! every triangle fully submerged, no vertex in the surface; it contributes its stored sums. One
-//! above zero by the margin contributes nothing; any other is
+//! for every node): [`Hierarchy::height_round_off`]. A node whose interval lies below zero by
+//! more than the margin `8ε·(M + |h_c|)` has every triangle fully submerged, with no vertex in
+//! the surface, and contributes its stored sums; one above zero by the margin contributes
+//! nothing; any other is
 //! opened, down to the leaves, whose triangles go through the same per-triangle code as the scan.
 //! The classification of every triangle is therefore the scan's own, and the result equals the
 //! scan's up to the order of summation. The cost follows the number of nodes the plane crosses,
@@ -114,7 +113,7 @@ impl<T: Real> PlaneTest<T> {
         PlaneTest {
             normal,
             height,
-            margin: hierarchy.height_round_off(height) * T::from_f64_lossy(4.0),
+            margin: hierarchy.height_round_off(height) * T::from_f64_lossy(2.0),
             near,
             far: near.map(|k| (k + 3) % 6),
         }

@@ -68,25 +68,30 @@ impl<T: Real> VolumeSums<T> {
 
 /// `Exact`'s and `Improved`'s sums.
 ///
-/// The moments are summed about the centroid (`exact`). The volume is summed about `apex`, the
-/// projection of the centroid on the water plane, where the cap contributes nothing and every
-/// other term is a face of the submerged part times its distance from the plane: the fully
-/// submerged triangles as `Σ detᵢ − apex·Σ 2Aᵢ` (`2Aᵢ = (bᵢ − aᵢ)×(cᵢ − aᵢ)`, from the
-/// precomputed `detᵢ` about the centroid) and each cut triangle's submerged part `P` as
+/// The volume and the moments are summed about the centroid (`exact`, and `clipped` for
+/// `Improved`): the precomputed tetrahedra of the fully submerged triangles, the clipped parts
+/// of the cut ones and the cap, a fan from `apex`, the projection of the centroid on the water
+/// plane. For a thin submerged part of size `δ` (a corner or an edge dipping into the water, a
+/// face lying in it) those sums keep round-off of the size of the body times `δ`, which swamps
+/// a volume of order `δ³`: below `√ε` of the body's volume they do not even give its sign.
+/// For such volumes a second pass (`ROBUST`) sums the volume about `apex` instead, where the cap
+/// contributes nothing and every other term is a face of the submerged part times its distance
+/// from the plane: the fully submerged triangles as `Σ detᵢ − apex·Σ 2Aᵢ`
+/// (`2Aᵢ = (bᵢ − aᵢ)×(cᵢ − aᵢ)`, from the precomputed `detᵢ` about the centroid; a triangle lying
+/// in the surface within round-off adds nothing) and each cut triangle's submerged part `P` as
 /// `(ab − apex)·2A_P`, with `ab` a waterline point of `P`. A part of size `δ` then contributes
-/// in proportion to `δ`, not to the distance of `apex` (summing it about the centroid with the
-/// cap leaves round-off of the size of the body times `δ`, which swamps the `δ³` volume of a body
-/// dipping a corner into the water).
+/// in proportion to `δ`, and the volume keeps its sign down to dips of about `√ε` of the body's
+/// size.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct ExactSums<T: Real> {
     /// The submerged volume's sums about the centroid: fully submerged triangles, clipped
     /// waterline triangles and the cap.
     pub exact: VolumeSums<T>,
-    /// `Σ detᵢ` over the fully submerged triangles (not lying in the surface).
+    /// `ROBUST` only: `Σ detᵢ` over the fully submerged triangles not lying in the surface.
     pub submerged_volume6: T,
     /// `Σ 2Aᵢ` over the same triangles.
     pub submerged_area2: Vector3<T>,
-    /// `Σ (ab − apex)·2A_P` over the submerged parts of the cut triangles.
+    /// `ROBUST` only: `Σ (ab − apex)·2A_P` over the submerged parts of the cut triangles.
     pub cut_volume6: T,
     /// `Improved` only: the clipped parts of the waterline triangles, about `apex`.
     pub clipped: VolumeSums<T>,
@@ -185,29 +190,47 @@ impl<T: Real> Mesh<T> {
     ) -> Buoyancy<T> {
         let apex = frame.normal_local * -frame.height;
         let improved = method == Method::Improved;
-        let sums = self.volume_sums(frame, hierarchy, parallel, |s: &mut ExactSums<T>, i| {
-            self.exact_triangle(frame, &apex, improved, s, i)
+        let first = self.volume_sums(frame, hierarchy, parallel, |s: &mut ExactSums<T>, i| {
+            self.exact_triangle::<false>(frame, &apex, improved, s, i)
         });
+        let volume6 = if improved {
+            first.exact.volume6 - first.clipped.volume6
+        } else {
+            first.exact.volume6
+        };
+        let thin = T::from_f64_lossy(6.0) * T::default_epsilon().sqrt() * self.volume_scale;
+        let (sums, volume6) = if volume6.abs() > thin {
+            (first, volume6)
+        } else {
+            // A thin part, or nothing, under water: the volume about the plane (see
+            // `ExactSums`).
+            let sums = self.volume_sums(frame, hierarchy, parallel, |s: &mut ExactSums<T>, i| {
+                self.exact_triangle::<true>(frame, &apex, improved, s, i)
+            });
+            let volume6 = if improved {
+                sums.submerged_volume6_about(&apex)
+            } else {
+                // The submerged volume of a closed mesh is never negative: what is left below
+                // zero is the round-off of a part too thin to measure, so nothing is under
+                // water.
+                sums.volume6(&apex).max(T::zero())
+            };
+            (sums, volume6)
+        };
         let ExactSums { exact, clipped, .. } = sums;
         if !improved {
-            let volume6 = sums.volume6(&apex);
-            // The submerged volume of a closed mesh is never negative: a negative sum is the
-            // round-off of a part too thin to measure (a dip below about √(ε·M·D), `M` the
-            // size of the body and `D` the distance from `apex` to the part), so nothing is
-            // under water.
-            let sums = if volume6 < T::zero() {
+            let sums = if volume6 > T::zero() {
+                VolumeSums { volume6, ..exact }
+            } else {
                 VolumeSums {
                     counts: exact.counts,
                     ..VolumeSums::zero()
                 }
-            } else {
-                VolumeSums { volume6, ..exact }
             };
             return self.volume_result(frame, water, sums, Vector3::zeros());
         }
-        // Improved = tetrahedra from `apex` over the fully submerged triangles.
-        let volume6 = sums.submerged_volume6_about(&apex);
-        // First moment about apex: the exact volume's about `apex` minus the clipped parts',
+        // Improved = tetrahedra from `apex` over the fully submerged triangles. First moment
+        // about apex: the exact volume's about `apex` minus the clipped parts',
         // Σ det·(a+b+c − 4·apex) = moment24 − 4·apex·volume6.
         let moment24 =
             exact.moment24 - apex * (T::from_f64_lossy(4.0) * exact.volume6) - clipped.moment24;
@@ -268,7 +291,7 @@ impl<T: Real> Mesh<T> {
     /// `Exact`'s contribution of triangle `i`, about the centroid, in `exact`; with `improved`,
     /// its clipped part about `apex` in `clipped` too.
     #[inline(always)]
-    fn exact_triangle(
+    fn exact_triangle<const ROBUST: bool>(
         &self,
         frame: &Frame<T>,
         apex: &Vector3<T>,
@@ -285,7 +308,8 @@ impl<T: Real> Mesh<T> {
                 exact.moment24 += self.tetra_moment24[i];
                 exact.counts.full += 1;
                 let zero = T::zero();
-                if h[0] != zero || h[1] != zero || h[2] != zero {
+                let r = frame.round_off;
+                if ROBUST && (h[0] < -r || h[1] < -r || h[2] < -r) {
                     // About `apex` a triangle lying in the surface adds nothing.
                     sums.submerged_volume6 += self.tetra_volume6[i];
                     sums.submerged_area2 += (v[1] - v[0]).cross(&(v[2] - v[0]));
@@ -320,12 +344,14 @@ impl<T: Real> Mesh<T> {
                 } = cut_at_waterline(v, h);
                 // The submerged part's area vector, (a, ab, ca) or the quadrilateral
                 // (ab, b, c, ca) from its diagonals, and its tetrahedron from `apex`.
-                let area2 = if odd_is_below {
-                    (ab - a).cross(&(ca - a))
-                } else {
-                    (c - ab).cross(&(ca - b))
-                };
-                sums.cut_volume6 += (ab - apex).dot(&area2);
+                if ROBUST {
+                    let area2 = if odd_is_below {
+                        (ab - a).cross(&(ca - a))
+                    } else {
+                        (c - ab).cross(&(ca - b))
+                    };
+                    sums.cut_volume6 += (ab - apex).dot(&area2);
+                }
                 let x = ab.cross(&ca);
                 let (part, cap) = (a.dot(&x), apex.dot(&x));
                 let rim = ab + ca;
