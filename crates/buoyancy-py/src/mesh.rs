@@ -137,18 +137,18 @@ impl PyMesh {
         }
     }
 
-    /// A mesh validated and prepared by the core from vertices and triangles.
+    /// A mesh validated and prepared by the core from vertices and triangles, with the
+    /// interpreter lock released.
     pub fn build(py: Python<'_>, (vertices, triangles): Shape) -> PyResult<Self> {
         let kept = vertices.clone();
-        let inner = detach_if_large(py, triangles.len(), move || {
-            buoyancy_core::Mesh::new(vertices, triangles)
-        })
-        .map_err(|e| to_py(e, None))?;
+        let inner = py
+            .detach(move || buoyancy_core::Mesh::new(vertices, triangles))
+            .map_err(|e| to_py(e, None))?;
         Ok(PyMesh::new(inner, kept))
     }
 
-    /// This mesh mapped by `map`, the core's transform by the affine `matrix`; errors are
-    /// prefixed with `argument`.
+    /// This mesh mapped by `map`, the core's transform by the affine `matrix`, with the
+    /// interpreter lock released; errors are prefixed with `argument`.
     fn mapped(
         &self,
         py: Python<'_>,
@@ -157,7 +157,8 @@ impl PyMesh {
         map: impl Send + FnOnce(&buoyancy_core::Mesh<f64>) -> Result<buoyancy_core::Mesh<f64>, Error>,
     ) -> PyResult<Self> {
         let mesh = &self.inner;
-        let inner = detach_if_large(py, mesh.triangle_count(), move || map(mesh))
+        let inner = py
+            .detach(move || map(mesh))
             .map_err(|e| to_py(e, Some(argument)))?;
         // The vertices the core built the new mesh from, so that pickling the result rebuilds it
         // bit for bit.
