@@ -2,7 +2,8 @@
 # Runs every test of the project: unit, integration, property and doc tests of all crates,
 # with and without the optional features; then builds the Python wheel into a fresh virtual
 # environment (.venv-test/) with `pip install .` (and rapier3d, for buoyancy.rapier) and runs
-# its pytest suite (tests/python).
+# its pytest suite (tests/python), checks the stubs against the compiled module (mypy's stubtest)
+# and lints the Python code (ruff).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo test --workspace --all-features
