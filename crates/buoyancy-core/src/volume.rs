@@ -8,7 +8,8 @@
 //! segments (and over mesh edges lying exactly in the plane, where a submerged triangle meets a
 //! dry one). So `Exact` costs `Fast` plus work on the waterline triangles only. `Improved` is
 //! `Exact` about `o` minus the clipped parts, i.e. the tetrahedra from `o` to the fully
-//! submerged triangles. With the hierarchy, whole nodes under water add their stored sums (see
+//! submerged triangles. A body with only a sliver under water takes a second pass, which sums
+//! the volume about the plane (see [`ExactSums`]). With the hierarchy, whole nodes under water add their stored sums (see
 //! `hierarchy`), and the cost follows the waterline.
 
 use nalgebra::Vector3;
@@ -179,7 +180,8 @@ impl<T: Real> Mesh<T> {
     /// tetrahedra of `Fast`, the waterline triangles their clipped part, and the cap closing the
     /// submerged volume on the water plane a fan of tetrahedra from `apex`, the projection of the
     /// centroid on the plane, over the waterline segments. Only the waterline costs more than
-    /// `Fast`.
+    /// `Fast`. When less than `√ε` of the body's volume is found under water, a second pass sums
+    /// the volume about the plane, which keeps its sign (see [`ExactSums`]).
     pub(crate) fn exact_or_improved(
         &self,
         frame: &Frame<T>,
