@@ -7,26 +7,21 @@
 //! cargo bench -p buoyancy-rapier --bench step --features rayon
 //! ```
 
-use std::path::PathBuf;
-
 use buoyancy_core::nalgebra::Point3;
 use buoyancy_core::{Mesh, shape};
 use buoyancy_rapier::{FloatOptions, FloatingBodies};
 use criterion::{Criterion, criterion_group, criterion_main};
 use rapier3d::prelude::*;
 
+/// The bunny (the procedural torus knot when the sample meshes are absent), scaled to a
+/// bounding radius of 0.3 m about its centroid.
 fn bunny() -> (String, Mesh<f64>) {
-    let dir = std::env::var_os("BUOYANCY_MESHES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| {
-            PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/meshes")
-        });
-    let (name, (v, t)) = match buoyancy_core::io::load::<f64>(dir.join("bunny.obj")) {
-        Ok(shape) => ("bunny".to_string(), shape),
-        Err(_) => {
-            eprintln!(
-                "note: bunny.obj not found (set BUOYANCY_MESHES); benchmarking the procedural torus knot"
-            );
+    let loaded = buoyancy_samples::mesh_path("bunny.obj")
+        .and_then(|p| buoyancy_core::io::load::<f64>(p).ok());
+    let (name, (v, t)) = match loaded {
+        Some(shape) => ("bunny".to_string(), shape),
+        None => {
+            eprintln!("note: benchmarking the procedural torus knot instead of bunny.obj");
             (
                 "torus knot".to_string(),
                 shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16).unwrap(),

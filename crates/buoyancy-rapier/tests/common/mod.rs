@@ -1,8 +1,6 @@
 //! Shared helpers of the adapter's tests: a small world, settling, and the equilibrium checks.
 #![allow(dead_code)]
 
-use std::path::PathBuf;
-
 use buoyancy_core::{Mesh, shape};
 use buoyancy_rapier::{FloatOptions, FloatingBodies};
 use rapier3d::prelude::*;
@@ -127,27 +125,15 @@ pub fn tilt_degrees(rb: &RigidBody) -> f32 {
     cos.min(1.0).acos().to_degrees()
 }
 
-/// The folder of the shared test meshes (`$BUOYANCY_MESHES`, else `../shared/meshes` beside the
-/// repository), if it exists.
-pub fn meshes_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("BUOYANCY_MESHES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| {
-            PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/meshes")
-        });
-    dir.is_dir().then_some(dir)
-}
-
-/// A shared mesh scaled so that its bounding radius is `radius`, wound outward and centered on
+/// A sample mesh scaled so that its bounding radius is `radius`, wound outward and centered on
 /// its centroid, or the procedural torus knot (with a note) when the file is absent.
 pub fn model(file: &str, radius: f64) -> (String, Mesh<f64>) {
-    let loaded = meshes_dir().and_then(|d| buoyancy_core::io::load::<f64>(d.join(file)).ok());
+    let loaded =
+        buoyancy_samples::mesh_path(file).and_then(|p| buoyancy_core::io::load::<f64>(p).ok());
     let (name, (v, t)) = match loaded {
         Some(shape) => (file.to_string(), shape),
         None => {
-            eprintln!(
-                "note: {file} not found (set BUOYANCY_MESHES); using the procedural torus knot"
-            );
+            eprintln!("note: using the procedural torus knot instead of {file}");
             (
                 "procedural torus knot".to_string(),
                 shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 128, 12).unwrap(),
