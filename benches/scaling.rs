@@ -11,16 +11,15 @@
 //! the rows of `benches/scaling.csv` (to restyle the plot without the minutes of measurement).
 
 mod common;
-#[path = "common/plot_text.rs"]
-mod plot_text;
+#[path = "common/plot_font.rs"]
+mod plot_font;
 
 use std::hint::black_box;
 use std::time::Instant;
 
 use buoyancy::{Mesh, Method, Traversal, shape};
-use plot_text::{Style, draw};
+use plot_font::FAMILY;
 use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, VPos};
 
 struct Row {
     triangles: usize,
@@ -177,79 +176,64 @@ fn read_csv(path: &std::path::Path) -> Result<Vec<Row>, Box<dyn std::error::Erro
     Ok(rows)
 }
 
-/// Log-log: µs per evaluation against triangles, with the built-in bitmap font for the text.
+/// Log-log: µs per evaluation against triangles (both axes in decades, `log10` of the value),
+/// with the legend in the empty top left corner.
 fn plot(rows: &[Row], png: &std::path::Path) -> Result<(), Box<dyn std::error::Error>> {
     const X: std::ops::Range<f64> = 1.0..6.2;
     const Y: std::ops::Range<f64> = -1.5..4.5;
-    let grey = RGBColor(215, 215, 215);
-    let text = Style::new(2, BLACK);
+    plot_font::register()?;
     let root = BitMapBackend::new(png, (1000, 680)).into_drawing_area();
     root.fill(&WHITE)?;
+    // The top margin keeps the title's ascenders in the image (plotters' ab_glyph renderer
+    // draws top-anchored text a little above its anchor).
+    let root = root
+        .margin(10, 0, 0, 0)
+        .titled("Cost per evaluation against mesh size", (FAMILY, 30))?;
     let mut chart = ChartBuilder::on(&root)
-        .margin_top(96)
+        .caption(
+            "Exact and Exact Surface on torus knots; f64, one thread, 100 poses",
+            (FAMILY, 20),
+        )
         .margin_right(36)
-        .margin_bottom(78)
-        .margin_left(124)
+        .margin_left(10)
+        .margin_bottom(10)
+        .x_label_area_size(64)
+        .y_label_area_size(110)
         .build_cartesian_2d(X, Y)?;
-    let (x0, y0) = chart.backend_coord(&(X.start, Y.end));
-    let (x1, y1) = chart.backend_coord(&(X.end, Y.start));
-
-    draw(
-        &root,
-        "Cost per evaluation against mesh size",
-        (x0, 14),
-        Style::new(3, BLACK),
-    )?;
-    draw(
-        &root,
-        "Exact and Exact Surface on torus knots; f64, one thread, 100 poses",
-        (x0, 50),
-        text,
-    )?;
-
-    for decade in 1..=6 {
-        let x = decade as f64;
-        chart.draw_series(LineSeries::new([(x, Y.start), (x, Y.end)], grey))?;
-        let (px, _) = chart.backend_coord(&(x, Y.start));
-        root.draw(&PathElement::new([(px, y1), (px, y1 + 5)], BLACK))?;
-        let exponent: String = decade.to_string().chars().map(superscript).collect();
-        draw(
-            &root,
-            &format!("10{exponent}"),
-            (px, y1 + 12),
-            text.anchor(HPos::Center, VPos::Top),
-        )?;
-    }
-    draw(
-        &root,
-        "triangles",
-        ((x0 + x1) / 2, y1 + 44),
-        text.anchor(HPos::Center, VPos::Top),
-    )?;
     let time = ["0.1 µs", "1 µs", "10 µs", "100 µs", "1 ms", "10 ms"];
-    for (decade, label) in (-1..=4).zip(time) {
-        let y = decade as f64;
-        chart.draw_series(LineSeries::new([(X.start, y), (X.end, y)], grey))?;
-        let (_, py) = chart.backend_coord(&(X.start, y));
-        root.draw(&PathElement::new([(x0 - 5, py), (x0, py)], BLACK))?;
-        draw(
-            &root,
-            label,
-            (x0 - 10, py),
-            text.anchor(HPos::Right, VPos::Center),
-        )?;
-    }
-    draw(
-        &root,
-        "time per evaluation",
-        (x0 - 112, (y0 + y1) / 2),
-        text.anchor(HPos::Center, VPos::Top).up(),
-    )?;
+    chart
+        .configure_mesh()
+        .light_line_style(TRANSPARENT)
+        .bold_line_style(RGBColor(215, 215, 215))
+        .x_labels(6)
+        .y_labels(7)
+        .x_desc("triangles")
+        .y_desc("time per evaluation")
+        .label_style((FAMILY, 18))
+        .axis_desc_style((FAMILY, 20))
+        .x_label_formatter(&|decade| {
+            if decade.fract() != 0.0 {
+                return String::new();
+            }
+            let exponent: String = format!("{decade:.0}").chars().map(superscript).collect();
+            format!("10{exponent}")
+        })
+        .y_label_formatter(&|decade| {
+            if decade.fract() != 0.0 {
+                return String::new();
+            }
+            let k = *decade as i32 + 1;
+            usize::try_from(k)
+                .ok()
+                .and_then(|k| time.get(k))
+                .map_or_else(String::new, |label| label.to_string())
+        })
+        .draw()?;
 
     let series = [(false, 3, "Exact"), (true, 1, "Exact Surface")];
     let traversals = [(0, RED, "scan"), (1, BLUE, "hierarchy")];
-    for (surface, width, _) in series {
-        for (traversal, colour, _) in traversals {
+    for (surface, width, method) in series {
+        for (traversal, colour, traversal_name) in traversals {
             let points = rows.iter().map(|r| {
                 let t = if surface {
                     r.surface[traversal]
@@ -258,34 +242,26 @@ fn plot(rows: &[Row], png: &std::path::Path) -> Result<(), Box<dyn std::error::E
                 };
                 ((r.triangles as f64).log10(), t.log10())
             });
-            chart.draw_series(LineSeries::new(points.clone(), colour.stroke_width(width)))?;
+            chart
+                .draw_series(LineSeries::new(points.clone(), colour.stroke_width(width)))?
+                .label(format!("{method}, {traversal_name}"))
+                .legend(move |(x, y)| {
+                    EmptyElement::at((x, y))
+                        + PathElement::new([(0, 0), (28, 0)], colour.stroke_width(width))
+                        + Circle::new((14, 0), width + 1, colour.filled())
+                });
             chart.draw_series(points.map(|p| Circle::new(p, width + 1, colour.filled())))?;
         }
     }
-    root.draw(&Rectangle::new([(x0, y0), (x1, y1)], BLACK))?;
-
-    // The legend, in the empty top left corner.
-    let (lx, ly) = (x0 + 16, y0 + 16);
-    root.draw(&Rectangle::new(
-        [(lx, ly), (lx + 330, ly + 4 * 28 + 16)],
-        WHITE.filled(),
-    ))?;
-    root.draw(&Rectangle::new(
-        [(lx, ly), (lx + 330, ly + 4 * 28 + 16)],
-        grey,
-    ))?;
-    let mut y = ly + 14;
-    for (_, width, method) in series {
-        for (_, colour, traversal) in traversals {
-            root.draw(&PathElement::new(
-                [(lx + 12, y + 7), (lx + 52, y + 7)],
-                colour.stroke_width(width),
-            ))?;
-            root.draw(&Circle::new((lx + 32, y + 7), width + 1, colour.filled()))?;
-            draw(&root, &format!("{method}, {traversal}"), (lx + 66, y), text)?;
-            y += 28;
-        }
-    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
+        .margin(16)
+        .legend_area_size(40)
+        .label_font((FAMILY, 18))
+        .background_style(WHITE)
+        .border_style(RGBColor(215, 215, 215))
+        .draw()?;
     root.present()?;
     Ok(())
 }
