@@ -94,7 +94,8 @@
 //! body held by contacts (on the bottom, against a dock in a current) feels less drag than the
 //! model says, and part of its net weight taken off while it jitters. Gravity is taken as the
 //! water's (`g` against its normal, times the body's gravity scale). A body whose pose, velocity
-//! or result is not finite gets no force from the adapter (and the previous one is taken back).
+//! or result is not finite gets no force from the adapter (and the previous one is taken back);
+//! its report's [`outcome`](FloatReport::outcome) is [`Outcome::NotFinite`].
 
 mod applied_share;
 mod convert;
