@@ -59,6 +59,12 @@ pub enum Error {
         /// What is wrong with it.
         reason: &'static str,
     },
+    /// A water surface (see [`waves`](crate::waves)) that is not physical or cannot be
+    /// evaluated: a negative amplitude, a grid of the wrong size, a non-finite elevation or time.
+    InvalidSurface {
+        /// What is wrong with it.
+        reason: &'static str,
+    },
     /// A transform given to [`Mesh::transformed`](crate::Mesh::transformed) or
     /// [`Mesh::scaled`](crate::Mesh::scaled) is not a finite, invertible affine map.
     InvalidTransform {
@@ -125,6 +131,7 @@ impl fmt::Display for Error {
                 write!(f, "invalid shape parameter {parameter}: {reason}")
             }
             Error::InvalidTransform { reason } => write!(f, "invalid transform: {reason}"),
+            Error::InvalidSurface { reason } => write!(f, "invalid water surface: {reason}"),
             Error::InvalidVelocity => {
                 write!(f, "invalid velocity: a NaN or infinite component")
             }

@@ -64,6 +64,8 @@ mod traversal;
 mod validation;
 mod volume;
 mod water;
+pub mod wave_pressure;
+pub mod waves;
 
 pub use buoyancy::Buoyancy;
 pub use damping::{Damping, DampingCoefficients};

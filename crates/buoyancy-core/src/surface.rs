@@ -91,6 +91,40 @@ impl<T: Real> SurfaceSums<T> {
         self.torque24 += w.cross(&area2);
         self.moment24 += (w - n * (h_a * h_a)) * n.dot(&area2);
     }
+
+    /// Adds the pressure integrals of the wetted part of triangle `v` (vertex heights `h` above
+    /// the surface, linear over the triangle; up normal `n`) and counts it: the whole triangle
+    /// if it is submerged; if the waterline cuts it, with `exact` its part under water (the
+    /// corner at the odd vertex, or the whole triangle minus it), else nothing.
+    #[inline(always)]
+    pub fn add_wetted_part(&mut self, n: &Vector3<T>, v: [Vector3<T>; 3], h: [T; 3], exact: bool) {
+        match classify(&h) {
+            TriangleClass::Submerged => {
+                self.add_triangle(n, v, h);
+                self.counts.full += 1;
+            }
+            TriangleClass::Cut => {
+                self.counts.partial += 1;
+                if exact {
+                    let WaterlineCut {
+                        odd_is_below,
+                        a,
+                        ab,
+                        ca,
+                        heights,
+                        ..
+                    } = cut_at_waterline(v, h);
+                    if odd_is_below {
+                        self.add_corner(n, [a, ab, ca], heights[0], T::one());
+                    } else {
+                        self.add_triangle(n, v, h);
+                        self.add_corner(n, [a, ab, ca], heights[0], -T::one());
+                    }
+                }
+            }
+            TriangleClass::Dry => {}
+        }
+    }
 }
 
 impl<T: Real> Mesh<T> {
@@ -108,34 +142,7 @@ impl<T: Real> Mesh<T> {
         // Positions relative to the centroid.
         let triangle = |s: &mut SurfaceSums<T>, i: usize| {
             let v = self.corners(i);
-            let h = frame.heights(&v);
-            match classify(&h) {
-                TriangleClass::Submerged => {
-                    s.add_triangle(&n, v, h);
-                    s.counts.full += 1;
-                }
-                TriangleClass::Cut => {
-                    s.counts.partial += 1;
-                    if exact {
-                        // The corner at the odd vertex, or the whole triangle minus it.
-                        let WaterlineCut {
-                            odd_is_below,
-                            a,
-                            ab,
-                            ca,
-                            heights,
-                            ..
-                        } = cut_at_waterline(v, h);
-                        if odd_is_below {
-                            s.add_corner(&n, [a, ab, ca], heights[0], T::one());
-                        } else {
-                            s.add_triangle(&n, v, h);
-                            s.add_corner(&n, [a, ab, ca], heights[0], -T::one());
-                        }
-                    }
-                }
-                TriangleClass::Dry => {}
-            }
+            s.add_wetted_part(&n, v, frame.heights(&v), exact);
         };
         let sums = if hierarchy {
             self.surface_walk(frame, parallel, triangle)

@@ -1,0 +1,217 @@
+//! Linear (Airy) waves: a sum of sinusoidal components.
+
+use alloc::vec::Vec;
+
+use nalgebra::{Point3, Vector3};
+
+use super::{WaterSurface, horizontal_direction};
+use crate::{Error, Real, Water};
+
+/// One linear wave component: `η = a·cos(k·q − ω·t + φ)`, with `k = 2π/λ` along `direction`
+/// (projected onto the still plane) and `ω` from the dispersion relation (see [`AiryWaves`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AiryComponent<T: Real> {
+    /// `a`, the amplitude (half the height from trough to crest), m, finite and non-negative.
+    pub amplitude: T,
+    /// `λ`, the wavelength, m, finite and positive.
+    pub wavelength: T,
+    /// The direction the wave travels in, world frame; its component along the water's up
+    /// normal is ignored. Finite, not along the normal.
+    pub direction: Vector3<T>,
+    /// `φ`, the phase at the world origin at `t = 0`, rad.
+    pub phase: T,
+}
+
+impl<T: Real> AiryComponent<T> {
+    /// The wave number `k = 2π/λ`, rad/m.
+    pub fn wavenumber(&self) -> T {
+        T::two_pi() / self.wavelength
+    }
+}
+
+/// Linear (Airy) waves: the sum of [`AiryComponent`]s over water of a finite depth `h` or
+/// infinitely deep, `η(q, t) = Σ aᵢ·cos(kᵢ·q − ωᵢ·t + φᵢ)`, where the angular frequency of each
+/// component follows the dispersion relation `ω² = g·k·tanh(k·h)` (`ω² = g·k` in deep water).
+///
+/// ```
+/// use buoyancy_core::waves::{AiryComponent, AiryWaves, WaterSurface};
+/// use buoyancy_core::Water;
+/// use nalgebra::{Point3, Vector3};
+///
+/// let swell = AiryWaves::new(
+///     vec![AiryComponent { amplitude: 0.5, wavelength: 20.0, direction: Vector3::x(), phase: 0.0 }],
+///     None, // deep water
+/// )?;
+/// let water = Water::default(); // y up
+/// let mut eta = [0.0f64; 2];
+/// swell.elevations(&water, &[Point3::origin(), Point3::new(5.0, 0.0, 0.0)], 0.0, &mut eta)?;
+/// assert!((eta[0] - 0.5).abs() < 1e-12 && eta[1].abs() < 1e-12); // a crest, a quarter wave on
+/// // Deep water: ω = √(g·k), a period of about 3.58 s for 20 m.
+/// let period = 2.0 * std::f64::consts::PI / swell.angular_frequency(0, water.gravity());
+/// assert!((period - 3.579).abs() < 1e-3);
+/// # Ok::<(), buoyancy_core::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct AiryWaves<T: Real> {
+    components: Vec<AiryComponent<T>>,
+    depth: Option<T>,
+}
+
+impl<T: Real> AiryWaves<T> {
+    /// Waves of `components` over water of `depth` (m, from the still level to the bottom), or
+    /// infinitely deep for `None`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidSurface`] naming what is wrong: a negative or non-finite amplitude, a
+    /// wavelength that is not finite and positive, a non-finite direction or phase, a depth
+    /// that is not finite and positive.
+    pub fn new(components: Vec<AiryComponent<T>>, depth: Option<T>) -> Result<Self, Error> {
+        for c in &components {
+            if !(c.amplitude.is_finite() && c.amplitude >= T::zero()) {
+                return Err(Error::InvalidSurface {
+                    reason: "a wave amplitude must be finite and non-negative (m)",
+                });
+            }
+            if !(c.wavelength.is_finite() && c.wavelength > T::zero()) {
+                return Err(Error::InvalidSurface {
+                    reason: "a wavelength must be finite and positive (m)",
+                });
+            }
+            if !(c.direction.iter().all(|x| x.is_finite()) && c.phase.is_finite()) {
+                return Err(Error::InvalidSurface {
+                    reason: "a wave direction and phase must be finite",
+                });
+            }
+        }
+        if let Some(h) = depth
+            && !(h.is_finite() && h > T::zero())
+        {
+            return Err(Error::InvalidSurface {
+                reason: "the depth must be finite and positive (m), or None for deep water",
+            });
+        }
+        Ok(AiryWaves { components, depth })
+    }
+
+    /// The components.
+    pub fn components(&self) -> &[AiryComponent<T>] {
+        &self.components
+    }
+
+    /// The depth of the water, m; `None` for deep water.
+    pub fn depth(&self) -> Option<T> {
+        self.depth
+    }
+
+    /// The angular frequency `ω` of component `index` under gravity `g` (m/s²), rad/s, from
+    /// `ω² = g·k·tanh(k·h)` (`g·k` in deep water).
+    pub fn angular_frequency(&self, index: usize, gravity: T) -> T {
+        let k = self.components[index].wavenumber();
+        let depth_factor = match self.depth {
+            Some(h) => (k * h).tanh(),
+            None => T::one(),
+        };
+        (gravity * k * depth_factor).sqrt()
+    }
+}
+
+impl<T: Real> WaterSurface<T> for AiryWaves<T> {
+    fn elevations(
+        &self,
+        water: &Water<T>,
+        points: &[Point3<T>],
+        time: T,
+        elevations: &mut [T],
+    ) -> Result<(), Error> {
+        elevations.fill(T::zero());
+        for (index, c) in self.components.iter().enumerate() {
+            let k = horizontal_direction(water, &c.direction)? * c.wavenumber();
+            let phase = c.phase - self.angular_frequency(index, water.gravity()) * time;
+            for (eta, q) in elevations.iter_mut().zip(points) {
+                *eta += c.amplitude * (k.dot(&q.coords) + phase).cos();
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use alloc::vec;
+
+    fn wave(wavelength: f64) -> AiryComponent<f64> {
+        AiryComponent {
+            amplitude: 1.0,
+            wavelength,
+            direction: Vector3::x(),
+            phase: 0.0,
+        }
+    }
+
+    #[test]
+    fn dispersion_tends_to_deep_and_shallow_water_limits() {
+        let g = 9.81;
+        let deep = AiryWaves::new(vec![wave(10.0)], Some(1000.0)).unwrap();
+        let k = wave(10.0).wavenumber();
+        assert!((deep.angular_frequency(0, g) - (g * k).sqrt()).abs() < 1e-12);
+        // Shallow water: ω ≈ k·√(g·h), within (k·h)²/6 relative.
+        let shallow = AiryWaves::new(vec![wave(1000.0)], Some(1.0)).unwrap();
+        let k = wave(1000.0).wavenumber();
+        let relative = shallow.angular_frequency(0, g) / (k * (g * 1.0f64).sqrt()) - 1.0;
+        assert!(relative.abs() < (k * 1.0).powi(2) / 6.0, "{relative}");
+    }
+
+    #[test]
+    fn the_wave_travels_at_its_phase_speed() {
+        let water = Water::default();
+        let waves = AiryWaves::new(vec![wave(30.0)], None).unwrap();
+        let c = waves.angular_frequency(0, 9.81) / wave(30.0).wavenumber();
+        let (mut now, mut later) = ([0.0], [0.0]);
+        waves
+            .elevations(&water, &[Point3::new(3.0, 0.0, 7.0)], 0.0, &mut now)
+            .unwrap();
+        let moved = Point3::new(3.0 + 2.0 * c, 0.0, 7.0);
+        waves.elevations(&water, &[moved], 2.0, &mut later).unwrap();
+        assert!((now[0] - later[0]).abs() < 1e-12);
+    }
+
+    #[test]
+    fn invalid_components_are_named() {
+        for bad in [
+            AiryComponent {
+                amplitude: -1.0,
+                ..wave(1.0)
+            },
+            AiryComponent {
+                wavelength: 0.0,
+                ..wave(1.0)
+            },
+            AiryComponent {
+                phase: f64::NAN,
+                ..wave(1.0)
+            },
+        ] {
+            assert!(matches!(
+                AiryWaves::new(vec![bad], None),
+                Err(Error::InvalidSurface { .. })
+            ));
+        }
+        assert!(AiryWaves::new(vec![wave(1.0)], Some(-2.0)).is_err());
+        // A direction along the up normal has no horizontal part.
+        let vertical = AiryWaves::new(
+            vec![AiryComponent {
+                direction: Vector3::y(),
+                ..wave(1.0)
+            }],
+            None,
+        )
+        .unwrap();
+        let mut eta = [0.0];
+        assert!(
+            vertical
+                .elevations(&Water::default(), &[Point3::origin()], 0.0, &mut eta)
+                .is_err()
+        );
+    }
+}

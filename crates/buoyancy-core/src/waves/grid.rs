@@ -1,0 +1,239 @@
+//! Heights on a regular grid, for oceans computed elsewhere.
+
+use alloc::vec::Vec;
+
+use nalgebra::{Matrix2, Point3, Vector2, Vector3};
+
+use super::WaterSurface;
+use crate::{Error, Real, Water};
+
+/// Elevations on a regular grid of `columns × rows` nodes in the still plane, interpolated
+/// bilinearly: node `(i, j)` sits at `origin + i·column_step + j·row_step` and has height
+/// `heights[j·columns + i]` (m). Periodic grids repeat with periods `columns·column_step` and
+/// `rows·row_step`; others hold their edge values beyond their edges.
+///
+/// The heights do not depend on time: replace them each step with [`HeightGrid::set_heights`],
+/// which copies into the grid's own storage and never reallocates.
+///
+/// ```
+/// use buoyancy_core::waves::{HeightGrid, WaterSurface};
+/// use buoyancy_core::Water;
+/// use nalgebra::{Point3, Vector3};
+///
+/// // 2 × 2 nodes, 1 m apart along x and z (y up), not periodic.
+/// let grid = HeightGrid::new(vec![0.0, 1.0, 0.0, 1.0], 2, 2, Point3::origin(), Vector3::x(), Vector3::z(), false)?;
+/// let mut eta = [0.0f64];
+/// grid.elevations(&Water::default(), &[Point3::new(0.25, 0.0, 0.5)], 0.0, &mut eta)?;
+/// assert!((eta[0] - 0.25).abs() < 1e-15);
+/// # Ok::<(), buoyancy_core::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct HeightGrid<T: Real> {
+    heights: Vec<T>,
+    columns: usize,
+    rows: usize,
+    origin: Point3<T>,
+    column_step: Vector3<T>,
+    row_step: Vector3<T>,
+    /// Maps `(q − origin)·column_step, (q − origin)·row_step` to grid coordinates.
+    to_grid: Matrix2<T>,
+    periodic: bool,
+}
+
+impl<T: Real> HeightGrid<T> {
+    /// A grid of `columns × rows` nodes (see the type's documentation). `column_step` and
+    /// `row_step` lie in the still plane of the water it is used with (their components along
+    /// the up normal are not removed: give them in the plane).
+    ///
+    /// # Errors
+    /// [`Error::InvalidSurface`] if there are fewer than 2 nodes along an axis, `heights` has
+    /// not `columns·rows` finite values, or the steps are not finite and independent.
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        heights: Vec<T>,
+        columns: usize,
+        rows: usize,
+        origin: Point3<T>,
+        column_step: Vector3<T>,
+        row_step: Vector3<T>,
+        periodic: bool,
+    ) -> Result<Self, Error> {
+        if columns < 2 || rows < 2 {
+            return Err(Error::InvalidSurface {
+                reason: "a height grid needs at least 2 columns and 2 rows",
+            });
+        }
+        let finite = |v: &Vector3<T>| v.iter().all(|x| x.is_finite());
+        if !(finite(&origin.coords) && finite(&column_step) && finite(&row_step)) {
+            return Err(Error::InvalidSurface {
+                reason: "a height grid's origin and steps must be finite",
+            });
+        }
+        let gram = Matrix2::new(
+            column_step.dot(&column_step),
+            column_step.dot(&row_step),
+            row_step.dot(&column_step),
+            row_step.dot(&row_step),
+        );
+        let to_grid = gram
+            .try_inverse()
+            .filter(|m| m.iter().all(|x| x.is_finite()))
+            .ok_or(Error::InvalidSurface {
+                reason: "a height grid's column and row steps must be non-zero and not parallel",
+            })?;
+        let mut grid = HeightGrid {
+            heights: alloc::vec![T::zero(); columns * rows],
+            columns,
+            rows,
+            origin,
+            column_step,
+            row_step,
+            to_grid,
+            periodic,
+        };
+        grid.set_heights(&heights)?;
+        Ok(grid)
+    }
+
+    /// Replaces the heights (row after row, `columns·rows` values, m) without reallocating.
+    ///
+    /// # Errors
+    /// [`Error::InvalidSurface`] if `heights` has the wrong length or a non-finite value; the
+    /// grid is then unchanged.
+    pub fn set_heights(&mut self, heights: &[T]) -> Result<(), Error> {
+        if heights.len() != self.heights.len() {
+            return Err(Error::InvalidSurface {
+                reason: "a height grid needs exactly columns × rows heights",
+            });
+        }
+        if !heights.iter().all(|h| h.is_finite()) {
+            return Err(Error::InvalidSurface {
+                reason: "a height grid's heights must be finite (m)",
+            });
+        }
+        self.heights.copy_from_slice(heights);
+        Ok(())
+    }
+
+    /// The heights, row after row.
+    pub fn heights(&self) -> &[T] {
+        &self.heights
+    }
+
+    /// The height at the point of grid coordinates `(s, t)` (in steps from the origin).
+    fn at(&self, s: T, t: T) -> T {
+        let (i, fs) = self.cell(s, self.columns);
+        let (j, ft) = self.cell(t, self.rows);
+        let next = |k: usize, n: usize| {
+            if self.periodic {
+                (k + 1) % n
+            } else {
+                (k + 1).min(n - 1)
+            }
+        };
+        let (i1, j1) = (next(i, self.columns), next(j, self.rows));
+        let h = |i: usize, j: usize| self.heights[j * self.columns + i];
+        let one = T::one();
+        (h(i, j) * (one - fs) + h(i1, j) * fs) * (one - ft)
+            + (h(i, j1) * (one - fs) + h(i1, j1) * fs) * ft
+    }
+
+    /// The cell index along an axis of `n` nodes and the fraction within it, for coordinate `x`.
+    fn cell(&self, x: T, n: usize) -> (usize, T) {
+        let count = T::from_f64_lossy(n as f64);
+        if self.periodic {
+            let wrapped = x - (x / count).floor() * count;
+            let floor = wrapped.floor();
+            // `wrapped` can round up to `count` itself.
+            let index = (floor.to_f64() as usize).min(n - 1);
+            (index, (wrapped - floor).min(T::one()))
+        } else {
+            let last = count - T::one();
+            let clamped = x.max(T::zero()).min(last);
+            let index = (clamped.floor().to_f64() as usize).min(n - 2);
+            (index, clamped - T::from_f64_lossy(index as f64))
+        }
+    }
+}
+
+impl<T: Real> WaterSurface<T> for HeightGrid<T> {
+    fn elevations(
+        &self,
+        _: &Water<T>,
+        points: &[Point3<T>],
+        _: T,
+        elevations: &mut [T],
+    ) -> Result<(), Error> {
+        for (eta, q) in elevations.iter_mut().zip(points) {
+            let d = q - self.origin;
+            let st = self.to_grid * Vector2::new(d.dot(&self.column_step), d.dot(&self.row_step));
+            *eta = self.at(st.x, st.y);
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use alloc::vec;
+
+    fn grid(periodic: bool) -> HeightGrid<f64> {
+        // 3 × 2 nodes, 2 m along x, 1 m along z: heights 0, 1, 2 on the first row, 3, 4, 5 on
+        // the second: η = x/2 + 3z inside.
+        let heights = vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0];
+        HeightGrid::new(
+            heights,
+            3,
+            2,
+            Point3::origin(),
+            Vector3::x() * 2.0,
+            Vector3::z(),
+            periodic,
+        )
+        .unwrap()
+    }
+
+    fn eta(g: &HeightGrid<f64>, x: f64, z: f64) -> f64 {
+        let mut e = [0.0];
+        g.elevations(&Water::default(), &[Point3::new(x, 0.0, z)], 0.0, &mut e)
+            .unwrap();
+        e[0]
+    }
+
+    #[test]
+    fn bilinear_inside_clamped_outside() {
+        let g = grid(false);
+        for (x, z) in [(0.0, 0.0), (1.0, 0.5), (3.9, 0.25), (4.0, 1.0)] {
+            assert!(
+                (eta(&g, x, z) - (x / 2.0 + 3.0 * z)).abs() < 1e-14,
+                "{x} {z}"
+            );
+        }
+        assert!((eta(&g, -5.0, 0.0) - 0.0).abs() < 1e-15);
+        assert!((eta(&g, 10.0, 7.0) - 5.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn periodic_grids_repeat() {
+        let g = grid(true);
+        for (x, z) in [(0.3, 0.2), (5.1, 0.7), (-1.0, 0.4)] {
+            let shifted = eta(&g, x + 6.0 * 3.0, z - 2.0 * 5.0);
+            assert!((eta(&g, x, z) - shifted).abs() < 1e-12, "{x} {z}");
+        }
+        // Between the last column and the first: halfway from 2 back to 0.
+        assert!((eta(&g, 5.0, 0.0) - 1.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn heights_are_replaced_in_place() {
+        let mut g = grid(false);
+        let before = g.heights().as_ptr();
+        g.set_heights(&[1.0; 6]).unwrap();
+        assert_eq!(before, g.heights().as_ptr());
+        assert!((eta(&g, 1.3, 0.4) - 1.0).abs() < 1e-15);
+        assert!(g.set_heights(&[1.0; 5]).is_err());
+        assert!(g.set_heights(&[f64::NAN; 6]).is_err());
+        assert!((eta(&g, 1.3, 0.4) - 1.0).abs() < 1e-15);
+    }
+}

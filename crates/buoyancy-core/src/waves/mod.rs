@@ -1,0 +1,124 @@
+//! Water surfaces that move: the elevation `η` of the free surface above the still plane of a
+//! [`Water`], as a function of horizontal position and time.
+//!
+//! # Frames
+//! A [`Water`] defines the still plane `n·p = level` of the world frame. A
+//! *horizontal position* is a world point projected onto that plane, `p − (n·p − level)·n`, so
+//! any up normal works. The free surface is `{ q + η(q, t)·n : q on the still plane }`, and a
+//! world point `x` lies `h = n·x − level − η(q, t)` above it, `q` its projection. Units: m, s.
+//!
+//! # Surfaces
+//! * [`CalmSurface`]: `η = 0`, the still water of [`Mesh::buoyancy`].
+//! * [`AiryWaves`]: a sum of linear (Airy) wave components, finite or infinite depth.
+//! * [`HeightGrid`]: heights on a regular grid, bilinear, optionally periodic, replaceable each
+//!   step without reallocating (oceans computed elsewhere).
+//! * [`SurfaceFn`]: any function or closure of the horizontal position and time.
+//!
+//! Every surface is evaluated in batches, once per vertex per evaluation
+//! ([`WaterSurface::elevations`]); [`Mesh::buoyancy_in_waves`]
+//! integrates the pressure over the wetted surface (see `wave_pressure`).
+
+mod airy;
+mod grid;
+
+use nalgebra::{Point3, Vector3};
+
+pub use airy::{AiryComponent, AiryWaves};
+pub use grid::HeightGrid;
+
+#[cfg(doc)]
+use crate::Mesh;
+use crate::{Error, Real, Water};
+
+/// A free surface: the elevation `η` (m) above the still plane of a [`Water`] at horizontal
+/// positions and a time (see the [module documentation](self)).
+pub trait WaterSurface<T: Real>: Sync {
+    /// Writes `η(points[i], time)` into `elevations[i]`, for horizontal positions `points`
+    /// (world frame, on the still plane of `water`) at `time` (s). `elevations` has the length
+    /// of `points`.
+    ///
+    /// # Errors
+    /// A typed [`Error`] if the surface cannot be evaluated there (e.g. a non-finite height).
+    fn elevations(
+        &self,
+        water: &Water<T>,
+        points: &[Point3<T>],
+        time: T,
+        elevations: &mut [T],
+    ) -> Result<(), Error>;
+}
+
+/// Still water: `η = 0` everywhere, at all times.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct CalmSurface;
+
+impl<T: Real> WaterSurface<T> for CalmSurface {
+    fn elevations(
+        &self,
+        _: &Water<T>,
+        _: &[Point3<T>],
+        _: T,
+        elevations: &mut [T],
+    ) -> Result<(), Error> {
+        elevations.fill(T::zero());
+        Ok(())
+    }
+}
+
+/// A surface given by a function `η(q, t)` of the horizontal position `q` (world frame, on the
+/// still plane) and the time `t`, called once per point.
+///
+/// ```
+/// use buoyancy_core::waves::{SurfaceFn, WaterSurface};
+/// use buoyancy_core::Water;
+/// use nalgebra::Point3;
+///
+/// // A plane tilted along x: η = 0.1·x.
+/// let ramp = SurfaceFn(|q: &Point3<f64>, _t: f64| 0.1 * q.x);
+/// let mut eta = [0.0; 2];
+/// ramp.elevations(&Water::default(), &[Point3::new(1.0, 0.0, 0.0), Point3::new(-2.0, 0.0, 5.0)], 0.0, &mut eta)?;
+/// assert_eq!(eta, [0.1, -0.2]);
+/// # Ok::<(), buoyancy_core::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy)]
+pub struct SurfaceFn<F>(pub F);
+
+impl<T: Real, F: Fn(&Point3<T>, T) -> T + Sync> WaterSurface<T> for SurfaceFn<F> {
+    fn elevations(
+        &self,
+        _: &Water<T>,
+        points: &[Point3<T>],
+        time: T,
+        elevations: &mut [T],
+    ) -> Result<(), Error> {
+        for (eta, q) in elevations.iter_mut().zip(points) {
+            *eta = (self.0)(q, time);
+            if !eta.is_finite() {
+                return Err(Error::InvalidSurface {
+                    reason: "the surface function returned a NaN or infinite elevation",
+                });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The unit vector along `direction` within the still plane of `water` (its component along
+/// the normal removed).
+///
+/// # Errors
+/// [`Error::InvalidSurface`] if `direction` is not finite or is (nearly) along the normal.
+pub(crate) fn horizontal_direction<T: Real>(
+    water: &Water<T>,
+    direction: &Vector3<T>,
+) -> Result<Vector3<T>, Error> {
+    let n = water.normal();
+    let horizontal = direction - n.into_inner() * n.dot(direction);
+    let norm = horizontal.norm();
+    if !(norm.is_finite() && norm > T::default_epsilon().sqrt() * direction.norm()) {
+        return Err(Error::InvalidSurface {
+            reason: "a wave direction must be finite and not along the water's up normal",
+        });
+    }
+    Ok(horizontal / norm)
+}

@@ -1,0 +1,204 @@
+//! Buoyancy under waves against analytic results: still water through the wave API, a tilted
+//! plane surface (divergence theorem), a wall-sided box in a regular Airy wave.
+
+mod common;
+
+use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
+use buoyancy_core::waves::{AiryComponent, AiryWaves, CalmSurface, HeightGrid, SurfaceFn};
+use buoyancy_core::{Mesh, Method, Pose, Traversal, Water, shape};
+use common::{all_meshes, assert_close, assert_close_v};
+
+fn pose(x: f64, y: f64, z: f64, roll: f64, pitch: f64, yaw: f64) -> Pose<f64> {
+    Pose::from_parts(
+        Translation3::new(x, y, z),
+        UnitQuaternion::from_euler_angles(roll, pitch, yaw),
+    )
+}
+
+/// Calm water through the wave API is Exact Surface, on every test mesh, at poses from dry to
+/// submerged.
+#[test]
+fn calm_water_is_exact_surface() {
+    let water = Water::new(1025.0, 9.81, Vector3::new(0.1, 1.0, -0.2), 0.3).unwrap();
+    for (name, mesh) in all_meshes() {
+        let r = mesh.bounding_radius();
+        for k in 0..9 {
+            let p = pose(
+                0.2,
+                r * (k as f64 / 4.0 - 1.0),
+                -0.1,
+                0.3 * k as f64,
+                0.7,
+                0.1,
+            );
+            let waves = mesh
+                .buoyancy_in_waves(&p, &water, &CalmSurface, 1.5)
+                .unwrap();
+            let still = mesh
+                .buoyancy_with(&p, &water, Method::ExactSurface, Traversal::Scan)
+                .unwrap();
+            let scale = 1e-12 * (1.0 + still.force.norm());
+            assert!((waves.force - still.force).norm() <= scale, "{name} {k}");
+            assert!(
+                (waves.torque - still.torque).norm() <= scale * (1.0 + r),
+                "{name} {k}"
+            );
+            assert_close(
+                name,
+                waves.submerged_volume,
+                still.submerged_volume,
+                1e-12,
+                mesh.volume(),
+            );
+            assert_close_v(
+                name,
+                &waves.center_of_buoyancy.coords,
+                &still.center_of_buoyancy.coords,
+                1e-9,
+                1.0 + r,
+            );
+        }
+    }
+}
+
+/// A plane free surface `η = s·x + b`: the force is `ρ·g·V·(−∂η/∂x, 1, 0)`, `V` the volume
+/// under that plane, and it acts through the centroid of that volume (divergence theorem on
+/// `p = ρg(η − y)`), whatever the mesh's resolution: exact to round-off.
+#[test]
+fn a_plane_surface_gives_the_divergence_theorem() {
+    let (s, b) = (0.3, 0.1);
+    let ramp = SurfaceFn(move |q: &Point3<f64>, _t: f64| s * q.x + b);
+    let calm = Water::default();
+    // The same plane as a still water surface: y − s·x = b.
+    let norm = (1.0 + s * s).sqrt();
+    let tilted = Water::new(1000.0, 9.81, Vector3::new(-s, 1.0, 0.0), b / norm).unwrap();
+    for (name, mesh) in all_meshes() {
+        let r = mesh.bounding_radius();
+        for k in 0..7 {
+            let p = pose(
+                0.4,
+                r * (k as f64 / 3.0 - 1.0),
+                0.2,
+                0.5 * k as f64,
+                -0.3,
+                0.8,
+            );
+            let w = mesh.buoyancy_in_waves(&p, &calm, &ramp, 0.0).unwrap();
+            let exact = mesh.buoyancy(&p, &tilted, Method::Exact).unwrap();
+            let weight = calm.specific_weight();
+            let expected = Vector3::new(-s, 1.0, 0.0) * (weight * exact.submerged_volume);
+            let tolerance = 1e-12 * weight * mesh.volume();
+            assert!(
+                (w.force - expected).norm() <= tolerance,
+                "{name} {k}: {:?} vs {expected:?}",
+                w.force
+            );
+            let torque = (exact.center_of_buoyancy - w.torque_point).cross(&expected);
+            assert!(
+                (w.torque - torque).norm() <= tolerance * (1.0 + r),
+                "{name} {k}: {:?} vs {torque:?}",
+                w.torque
+            );
+        }
+    }
+}
+
+/// A wall-sided box (length L along the wave, beam B, draft T) in a regular Airy wave of
+/// amplitude a, hydrostatic pressure: the heave force is
+/// `ρgB∫(T + η)dx = ρgBLT + ρgBa·(2/k)·sin(kL/2)·cos(ωt)` for a box centred at x = 0 (the
+/// sloping wetted sides add no vertical force). The error falls as the square of the mesh
+/// spacing: the surface is sampled at the vertices and interpolated linearly.
+#[test]
+fn a_wall_sided_box_in_a_regular_wave() {
+    let (length, beam, draft, amplitude, wavelength) = (4.0, 1.0, 0.5, 0.1, 10.0);
+    let water = Water::default();
+    let waves = AiryWaves::new(
+        vec![AiryComponent {
+            amplitude,
+            wavelength,
+            direction: Vector3::x(),
+            phase: 0.3,
+        }],
+        None,
+    )
+    .unwrap();
+    let k = 2.0 * std::f64::consts::PI / wavelength;
+    let omega = waves.angular_frequency(0, water.gravity());
+    let weight = water.specific_weight();
+    let mut errors = Vec::new();
+    for n in [8, 16, 32] {
+        let (v, t) = shape::cube::<f64>(n).unwrap();
+        let unit = Mesh::new(v, t).unwrap();
+        let b = unit.scaled(&Vector3::new(length, 1.0, beam)).unwrap();
+        // The box's bottom at y = −T: its center at 0.5 − T.
+        let p = pose(0.0, 0.5 - draft, 0.0, 0.0, 0.0, 0.0);
+        let mut worst: f64 = 0.0;
+        for step in 0..8 {
+            let time = step as f64 * 0.37;
+            let got = b.buoyancy_in_waves(&p, &water, &waves, time).unwrap();
+            let expected = weight * beam * length * draft
+                + weight
+                    * beam
+                    * amplitude
+                    * (2.0 / k)
+                    * (k * length / 2.0).sin()
+                    * (0.3 - omega * time).cos();
+            worst = worst.max((got.force.y - expected).abs() / (weight * beam * length * draft));
+        }
+        errors.push(worst);
+    }
+    assert!(errors[2] < 1e-4, "{errors:?}");
+    for pair in errors.windows(2) {
+        let ratio = pair[0] / pair[1];
+        assert!((3.0..5.5).contains(&ratio), "second order: {errors:?}");
+    }
+}
+
+/// A grid that samples a plane reproduces it: the same result as the plane's function.
+#[test]
+fn a_grid_of_a_plane_is_the_plane() {
+    let (s, b) = (-0.2, 0.05);
+    let heights: Vec<f64> = (0..21)
+        .flat_map(|j| (0..21).map(move |i| s * (i as f64 * 0.5 - 5.0) + b + 0.0 * j as f64))
+        .collect();
+    let grid = HeightGrid::new(
+        heights,
+        21,
+        21,
+        Point3::new(-5.0, 0.0, -5.0),
+        Vector3::x() * 0.5,
+        Vector3::z() * 0.5,
+        false,
+    )
+    .unwrap();
+    let ramp = SurfaceFn(move |q: &Point3<f64>, _t: f64| s * q.x + b);
+    let (v, t) = shape::uv_sphere::<f64>(1.0, 24, 12).unwrap();
+    let ball = Mesh::new(v, t).unwrap();
+    let p = pose(0.3, 0.2, -0.4, 0.2, 0.1, 0.0);
+    let a = ball
+        .buoyancy_in_waves(&p, &Water::default(), &grid, 0.0)
+        .unwrap();
+    let b = ball
+        .buoyancy_in_waves(&p, &Water::default(), &ramp, 0.0)
+        .unwrap();
+    assert!(
+        (a.force - b.force).norm() < 1e-9 * b.force.norm(),
+        "{a:?} {b:?}"
+    );
+    assert!((a.torque - b.torque).norm() < 1e-9 * (1.0 + b.torque.norm()));
+}
+
+/// Bad input is a typed error, never a NaN.
+#[test]
+fn bad_times_and_surfaces_are_errors() {
+    let (v, t) = shape::cube::<f64>(2).unwrap();
+    let cube = Mesh::new(v, t).unwrap();
+    let w = Water::default();
+    let p = Pose::identity();
+    assert!(
+        cube.buoyancy_in_waves(&p, &w, &CalmSurface, f64::NAN)
+            .is_err()
+    );
+    let nan = SurfaceFn(|_: &Point3<f64>, _: f64| f64::NAN);
+    assert!(cube.buoyancy_in_waves(&p, &w, &nan, 0.0).is_err());
+}
