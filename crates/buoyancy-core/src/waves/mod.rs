@@ -9,7 +9,8 @@
 //!
 //! # Surfaces
 //! * [`CalmSurface`]: `η = 0`, the still water of [`Mesh::buoyancy`].
-//! * [`AiryWaves`]: a sum of linear (Airy) wave components, finite or infinite depth.
+//! * [`AiryWaves`]: a sum of linear (Airy) wave components, finite or infinite depth, given
+//!   one by one or drawn from a [`SeaState`] (Pierson–Moskowitz or JONSWAP spectrum).
 //! * [`HeightGrid`]: heights on a regular grid, bilinear, optionally periodic, replaceable each
 //!   step without reallocating (oceans computed elsewhere).
 //! * [`SurfaceFn`]: any function or closure of the horizontal position and time.
@@ -20,11 +21,13 @@
 
 mod airy;
 mod grid;
+mod spectrum;
 
 use nalgebra::{Point3, Vector3};
 
 pub use airy::{AiryComponent, AiryWaves};
 pub use grid::HeightGrid;
+pub use spectrum::{SeaState, Spectrum};
 
 #[cfg(doc)]
 use crate::Mesh;
