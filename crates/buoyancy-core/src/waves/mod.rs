@@ -11,6 +11,8 @@
 //! * [`CalmSurface`]: `η = 0`, the still water of [`Mesh::buoyancy`].
 //! * [`AiryWaves`]: a sum of linear (Airy) wave components, finite or infinite depth, given
 //!   one by one or drawn from a [`SeaState`] (Pierson–Moskowitz or JONSWAP spectrum).
+//! * [`GerstnerWaves`]: trochoidal waves, the elevation at a point solved from the particle
+//!   there.
 //! * [`HeightGrid`]: heights on a regular grid, bilinear, optionally periodic, replaceable each
 //!   step without reallocating (oceans computed elsewhere).
 //! * [`SurfaceFn`]: any function or closure of the horizontal position and time.
@@ -20,12 +22,14 @@
 //! integrates the pressure over the wetted surface (see `wave_pressure`).
 
 mod airy;
+mod gerstner;
 mod grid;
 mod spectrum;
 
 use nalgebra::{Point3, Vector3};
 
 pub use airy::{AiryComponent, AiryWaves};
+pub use gerstner::GerstnerWaves;
 pub use grid::HeightGrid;
 pub use spectrum::{SeaState, Spectrum};
 

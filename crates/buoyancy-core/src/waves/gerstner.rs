@@ -1,0 +1,252 @@
+//! Trochoidal (Gerstner) waves: water particles on circles, crests sharper than troughs.
+
+use alloc::vec::Vec;
+
+use nalgebra::{Matrix3, Point3, Vector3};
+
+use super::{AiryComponent, WaterSurface, horizontal_direction};
+use crate::{Error, Real, Water};
+
+/// Trochoidal (Gerstner) waves in deep water: the particle at rest at horizontal position `p`
+/// moves to
+///
+/// ```text
+/// x(p, t) = p − Σ dᵢ·aᵢ·sin θᵢ,   η = Σ aᵢ·cos θᵢ,   θᵢ = kᵢ·p − ωᵢ·t + φᵢ,   ωᵢ² = g·kᵢ,
+/// ```
+///
+/// (`dᵢ` the unit direction of component `i`, `kᵢ = kᵢ·dᵢ`). The surface is the set of those
+/// points, so the elevation at a fixed point `q` needs the particle that is there: `p` is
+/// solved from `x(p, t) = q` by Newton's method, to `10⁻¹² · Σ aᵢ` (hence `η` too, its slope
+/// being below 1). The map is one-to-one while the steepness `Σ kᵢ·aᵢ` is below 1; at 1 the
+/// crests become cusps and beyond they fold over, which [`GerstnerWaves::new`] rejects.
+///
+/// ```
+/// use buoyancy_core::waves::{AiryComponent, GerstnerWaves, WaterSurface};
+/// use buoyancy_core::Water;
+/// use nalgebra::{Point3, Vector3};
+///
+/// let wave = AiryComponent { amplitude: 1.0, wavelength: 30.0, direction: Vector3::x(), phase: 0.0 };
+/// let gerstner = GerstnerWaves::new(vec![wave])?;
+/// // The crest is at x = 0, 1 m high; the trough, half a wavelength on, 1 m deep.
+/// let mut eta = [0.0f64; 2];
+/// gerstner.elevations(&Water::default(), &[Point3::origin(), Point3::new(15.0, 0.0, 0.0)], 0.0, &mut eta)?;
+/// assert!((eta[0] - 1.0).abs() < 1e-10 && (eta[1] + 1.0).abs() < 1e-10);
+/// # Ok::<(), buoyancy_core::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct GerstnerWaves<T: Real> {
+    components: Vec<AiryComponent<T>>,
+}
+
+impl<T: Real> GerstnerWaves<T> {
+    /// Gerstner waves of `components` (amplitude, wavelength, direction, phase as for Airy
+    /// waves), in deep water.
+    ///
+    /// # Errors
+    /// [`Error::InvalidSurface`] for a component that is not valid as an Airy component, and
+    /// for a steepness `Σ kᵢ·aᵢ` of 1 or more: the surface would fold over.
+    pub fn new(components: Vec<AiryComponent<T>>) -> Result<Self, Error> {
+        let components = super::AiryWaves::new(components, None)?
+            .components()
+            .to_vec();
+        let steepness = components
+            .iter()
+            .fold(T::zero(), |s, c| s + c.wavenumber() * c.amplitude);
+        if steepness >= T::one() {
+            return Err(Error::InvalidSurface {
+                reason: "a Gerstner sea with steepness Σ k·a of 1 or more folds over: lower the amplitudes",
+            });
+        }
+        Ok(GerstnerWaves { components })
+    }
+
+    /// The components.
+    pub fn components(&self) -> &[AiryComponent<T>] {
+        &self.components
+    }
+
+    /// The position at `time` and the elevation of the particle at rest at horizontal position
+    /// `rest` (world frame, on the still plane of `water`).
+    ///
+    /// # Errors
+    /// [`Error::InvalidSurface`] if a direction is along the water's up normal.
+    pub fn particle(
+        &self,
+        water: &Water<T>,
+        rest: &Point3<T>,
+        time: T,
+    ) -> Result<(Point3<T>, T), Error> {
+        let waves = self.resolved(water)?;
+        let (mut position, mut eta) = (*rest, T::zero());
+        for w in &waves {
+            let theta = w.k.dot(&rest.coords) + w.phase - w.omega * time;
+            position -= w.direction * (w.amplitude * theta.sin());
+            eta += w.amplitude * theta.cos();
+        }
+        Ok((position, eta))
+    }
+
+    fn resolved(&self, water: &Water<T>) -> Result<Vec<Resolved<T>>, Error> {
+        self.components
+            .iter()
+            .map(|c| {
+                let direction = horizontal_direction(water, &c.direction)?;
+                let k = c.wavenumber();
+                Ok(Resolved {
+                    direction,
+                    k: direction * k,
+                    amplitude: c.amplitude,
+                    phase: c.phase,
+                    omega: (water.gravity() * k).sqrt(),
+                })
+            })
+            .collect()
+    }
+}
+
+/// A component with its direction in the still plane, wave vector and angular frequency.
+struct Resolved<T: Real> {
+    direction: Vector3<T>,
+    k: Vector3<T>,
+    amplitude: T,
+    phase: T,
+    omega: T,
+}
+
+impl<T: Real> WaterSurface<T> for GerstnerWaves<T> {
+    fn elevations(
+        &self,
+        water: &Water<T>,
+        points: &[Point3<T>],
+        time: T,
+        elevations: &mut [T],
+    ) -> Result<(), Error> {
+        let waves = self.resolved(water)?;
+        let total = waves.iter().fold(T::zero(), |s, w| s + w.amplitude);
+        let tolerance = T::from_f64_lossy(1e-12) * total;
+        for (eta, q) in elevations.iter_mut().zip(points) {
+            // Newton on r(p) = p − Σ dᵢaᵢ sin θᵢ − q, Jacobian I − Σ aᵢ cos θᵢ dᵢ kᵢᵀ.
+            let mut p = q.coords;
+            let mut converged = total == T::zero();
+            for _ in 0..100 {
+                let mut residual = p - q.coords;
+                let mut jacobian = Matrix3::identity();
+                for w in &waves {
+                    let theta = w.k.dot(&p) + w.phase - w.omega * time;
+                    let (sin, cos) = theta.sin_cos();
+                    residual -= w.direction * (w.amplitude * sin);
+                    jacobian -= w.direction * w.k.transpose() * (w.amplitude * cos);
+                }
+                let Some(step) = jacobian.lu().solve(&residual) else {
+                    break;
+                };
+                p -= step;
+                if step.norm() <= tolerance {
+                    converged = true;
+                    break;
+                }
+            }
+            if !converged {
+                return Err(Error::InvalidSurface {
+                    reason: "the Gerstner particle at a point did not converge (the time or position is too large for the scalar type)",
+                });
+            }
+            *eta = waves.iter().fold(T::zero(), |e, w| {
+                e + w.amplitude * (w.k.dot(&p) + w.phase - w.omega * time).cos()
+            });
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use alloc::vec;
+
+    fn sea() -> GerstnerWaves<f64> {
+        GerstnerWaves::new(vec![
+            AiryComponent {
+                amplitude: 0.8,
+                wavelength: 20.0,
+                direction: Vector3::x(),
+                phase: 0.1,
+            },
+            AiryComponent {
+                amplitude: 0.4,
+                wavelength: 9.0,
+                direction: Vector3::new(1.0, 0.0, 1.0),
+                phase: 2.0,
+            },
+            AiryComponent {
+                amplitude: 0.1,
+                wavelength: 4.0,
+                direction: Vector3::new(-0.3, 0.0, 1.0),
+                phase: -1.0,
+            },
+        ])
+        .unwrap()
+    }
+
+    #[test]
+    fn round_trip_from_the_particle_to_the_elevation() {
+        let (waves, water) = (sea(), Water::default());
+        let mut worst: f64 = 0.0;
+        for i in 0..200 {
+            let rest = Point3::new(
+                (i as f64 * 0.37).sin() * 40.0,
+                0.0,
+                (i as f64 * 0.71).cos() * 40.0,
+            );
+            let time = i as f64 * 0.13;
+            let (position, eta) = waves.particle(&water, &rest, time).unwrap();
+            let mut found = [0.0];
+            waves
+                .elevations(&water, &[position], time, &mut found)
+                .unwrap();
+            worst = worst.max((found[0] - eta).abs());
+        }
+        assert!(worst <= 1e-10, "{worst:e}");
+    }
+
+    #[test]
+    fn crests_are_sharper_than_troughs() {
+        // One component: the crest is narrower than the trough, the mean level is below zero
+        // at fixed points (the Stokes-like asymmetry of a trochoid).
+        let waves = GerstnerWaves::new(vec![AiryComponent {
+            amplitude: 1.0,
+            wavelength: 12.0,
+            direction: Vector3::x(),
+            phase: 0.0,
+        }])
+        .unwrap();
+        let n = 1200;
+        let points: Vec<_> = (0..n)
+            .map(|i| Point3::new(12.0 * i as f64 / n as f64, 0.0, 0.0))
+            .collect();
+        let mut eta = vec![0.0; n];
+        waves
+            .elevations(&Water::default(), &points, 0.0, &mut eta)
+            .unwrap();
+        let above = eta.iter().filter(|e| **e > 0.0).count();
+        assert!(above < n / 2, "{above} of {n} above the still level");
+        let mean: f64 = eta.iter().sum::<f64>() / n as f64;
+        // Mean level of a trochoid at fixed points: −k·a²/2.
+        let k = 2.0 * core::f64::consts::PI / 12.0;
+        assert!((mean + k / 2.0).abs() < 1e-3, "{mean}");
+    }
+
+    #[test]
+    fn a_sea_that_would_fold_is_an_error() {
+        let steep = AiryComponent {
+            amplitude: 2.0,
+            wavelength: 12.0,
+            direction: Vector3::x(),
+            phase: 0.0,
+        };
+        assert!(matches!(
+            GerstnerWaves::new(vec![steep]),
+            Err(Error::InvalidSurface { .. })
+        ));
+    }
+}
