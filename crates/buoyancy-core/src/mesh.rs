@@ -77,6 +77,8 @@ pub struct Mesh<T: Real> {
     pub(crate) normals: Vec<TriangleNormal<T>>,
     /// Largest distance of a vertex from the centroid.
     pub(crate) bounding_radius: T,
+    /// Length of the longest edge, m.
+    pub(crate) longest_edge: T,
     /// Total surface area, m².
     pub(crate) surface_area: T,
     /// A bounding-volume hierarchy over the triangles.
@@ -135,6 +137,11 @@ impl<T: Real> Mesh<T> {
             normals.push(normal.cast());
         }
         let bounding_radius = relative.iter().map(|v| v.norm()).fold(0.0, f64::max);
+        let longest_edge = triangles
+            .iter()
+            .flat_map(|t| (0..3).map(move |k| (t[k], t[(k + 1) % 3])))
+            .map(|(a, b)| (relative[a as usize] - relative[b as usize]).norm())
+            .fold(0.0, f64::max);
         Ok(Mesh {
             vertices: layout.vertices,
             vertex_slots: layout.vertex_slots,
@@ -147,6 +154,7 @@ impl<T: Real> Mesh<T> {
             tetra_moment24,
             normals,
             bounding_radius: T::from_f64_lossy(bounding_radius),
+            longest_edge: T::from_f64_lossy(longest_edge),
             surface_area: T::from_f64_lossy(surface_area),
             hierarchy,
             node_sums,

@@ -38,8 +38,9 @@ impl<T: Real> Mesh<T> {
     /// the wetted surface (see the [module documentation](crate::wave_pressure)). The torque is
     /// about the body's center of mass.
     ///
-    /// One evaluation of the surface per vertex; every triangle is visited (the hierarchy's
-    /// stored sums assume a flat surface). It allocates two buffers of one number per vertex.
+    /// One evaluation of the surface per vertex that may be wet (see
+    /// [`WaterSurface::elevation_bound`]); every triangle is visited (the hierarchy's stored
+    /// sums assume a flat surface). It allocates three buffers of one number or point per vertex.
     ///
     /// ```
     /// use buoyancy_core::waves::{AiryComponent, AiryWaves, CalmSurface};
@@ -103,6 +104,9 @@ impl<T: Real> Mesh<T> {
     }
 
     /// The height of every stored vertex above the free surface, `n·x − level − η(q, time)`.
+    /// With a bound `b` on `|η|`, a vertex higher than `b` plus the longest edge above the
+    /// still plane belongs to dry triangles only: it gets `n·x − level − b > 0` and the surface
+    /// is not evaluated there.
     fn heights_below_waves(
         &self,
         frame: &Frame<T>,
@@ -111,27 +115,38 @@ impl<T: Real> Mesh<T> {
         time: T,
     ) -> Result<Vec<T>, Error> {
         let n = frame.normal_local;
-        // Heights above the still plane, and the horizontal positions in the world frame.
+        // Heights above the still plane.
         let mut heights: Vec<T> = self
             .vertices
             .iter()
             .map(|v| n.dot(v) + frame.height)
             .collect();
+        let bound = surface.elevation_bound().filter(|b| b.is_finite());
+        let reach = bound.map(|b| b + self.longest_edge);
+        let wet = |h: &T| reach.is_none_or(|r| *h <= r);
+        // The horizontal positions, world frame, of the vertices that may be wet.
         let points: Vec<Point3<T>> = self
             .vertices
             .iter()
             .zip(&heights)
+            .filter(|(_, h)| wet(h))
             .map(|(v, h)| frame.center_of_mass + frame.rotation * v - frame.normal * *h)
             .collect();
         let mut elevations = alloc::vec![T::zero(); points.len()];
         surface.elevations(water, &points, time, &mut elevations)?;
-        for (h, eta) in heights.iter_mut().zip(&elevations) {
-            if !eta.is_finite() {
-                return Err(Error::InvalidSurface {
-                    reason: "the surface gave a NaN or infinite elevation",
-                });
+        let mut eta = elevations.iter();
+        for h in heights.iter_mut() {
+            if wet(h) {
+                let eta = *eta.next().unwrap_or(&T::zero());
+                if !eta.is_finite() {
+                    return Err(Error::InvalidSurface {
+                        reason: "the surface gave a NaN or infinite elevation",
+                    });
+                }
+                *h -= eta;
+            } else if let Some(b) = bound {
+                *h -= b;
             }
-            *h -= *eta;
         }
         Ok(heights)
     }

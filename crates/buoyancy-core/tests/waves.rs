@@ -202,3 +202,50 @@ fn bad_times_and_surfaces_are_errors() {
     let nan = SurfaceFn(|_: &Point3<f64>, _: f64| f64::NAN);
     assert!(cube.buoyancy_in_waves(&p, &w, &nan, 0.0).is_err());
 }
+
+/// Skipping the vertices above the surface's bound changes nothing: the same sea without a
+/// bound (through a function) gives the same bits.
+#[test]
+fn skipping_the_dry_vertices_changes_nothing() {
+    let water = Water::default();
+    let sea = AiryWaves::from_sea_state(
+        &buoyancy_core::waves::SeaState {
+            spectrum: buoyancy_core::waves::Spectrum::Jonswap { gamma: 3.3 },
+            significant_height: 0.5,
+            peak_period: 3.0,
+            direction: Vector3::new(1.0, 0.0, 0.4),
+            spreading: Some(5.0),
+            components: 16,
+            seed: 3,
+        },
+        &water,
+        Some(20.0),
+    )
+    .unwrap();
+    let unbounded = SurfaceFn(|q: &Point3<f64>, t: f64| {
+        let mut eta = [0.0];
+        buoyancy_core::waves::WaterSurface::elevations(&sea, &Water::default(), &[*q], t, &mut eta)
+            .unwrap();
+        eta[0]
+    });
+    for (name, mesh) in all_meshes() {
+        let r = mesh.bounding_radius();
+        for k in 0..5 {
+            let p = pose(
+                0.3,
+                r * (k as f64 / 2.0 - 1.0),
+                0.1,
+                0.4 * k as f64,
+                0.2,
+                -0.5,
+            );
+            let a = mesh
+                .buoyancy_in_waves(&p, &water, &sea, 0.7 * k as f64)
+                .unwrap();
+            let b = mesh
+                .buoyancy_in_waves(&p, &water, &unbounded, 0.7 * k as f64)
+                .unwrap();
+            assert_eq!(a, b, "{name} {k}");
+        }
+    }
+}

@@ -133,6 +133,15 @@ impl<T: Real> WaterSurface<T> for AiryWaves<T> {
         }
         Ok(())
     }
+
+    /// `Σ aᵢ`.
+    fn elevation_bound(&self) -> Option<T> {
+        Some(
+            self.components
+                .iter()
+                .fold(T::zero(), |s, c| s + c.amplitude),
+        )
+    }
 }
 
 #[cfg(test)]

@@ -157,6 +157,15 @@ impl<T: Real> WaterSurface<T> for GerstnerWaves<T> {
         }
         Ok(())
     }
+
+    /// `Σ aᵢ`.
+    fn elevation_bound(&self) -> Option<T> {
+        Some(
+            self.components
+                .iter()
+                .fold(T::zero(), |s, c| s + c.amplitude),
+        )
+    }
 }
 
 #[cfg(test)]

@@ -38,6 +38,8 @@ pub struct HeightGrid<T: Real> {
     /// Maps `(q − origin)·column_step, (q − origin)·row_step` to grid coordinates.
     to_grid: Matrix2<T>,
     periodic: bool,
+    /// The largest `|height|`.
+    bound: T,
 }
 
 impl<T: Real> HeightGrid<T> {
@@ -90,6 +92,7 @@ impl<T: Real> HeightGrid<T> {
             row_step,
             to_grid,
             periodic,
+            bound: T::zero(),
         };
         grid.set_heights(&heights)?;
         Ok(grid)
@@ -112,6 +115,7 @@ impl<T: Real> HeightGrid<T> {
             });
         }
         self.heights.copy_from_slice(heights);
+        self.bound = heights.iter().fold(T::zero(), |m, h| m.max(h.abs()));
         Ok(())
     }
 
@@ -170,6 +174,11 @@ impl<T: Real> WaterSurface<T> for HeightGrid<T> {
             *eta = self.at(st.x, st.y);
         }
         Ok(())
+    }
+
+    /// The largest `|height|` of the grid: bilinear interpolation stays within the nodes' range.
+    fn elevation_bound(&self) -> Option<T> {
+        Some(self.bound)
     }
 }
 

@@ -53,6 +53,14 @@ pub trait WaterSurface<T: Real>: Sync {
         time: T,
         elevations: &mut [T],
     ) -> Result<(), Error>;
+
+    /// A bound on `|η|` everywhere and at all times (m), if the surface knows one. A vertex
+    /// higher above the still plane than this bound plus the mesh's longest edge belongs to dry
+    /// triangles only, so the surface is not evaluated there. `None` (the default): evaluated
+    /// at every vertex.
+    fn elevation_bound(&self) -> Option<T> {
+        None
+    }
 }
 
 /// Still water: `η = 0` everywhere, at all times.

@@ -1,0 +1,112 @@
+//! Buoyancy on waves (`Mesh::buoyancy_in_waves`): µs per evaluation on the paper's models under
+//! a calm surface, a 512² periodic height grid, 8 Airy components, a 64-component JONSWAP sea
+//! and 3 Gerstner components, f64, one thread, at the paper's 100 poses (the wave's time
+//! advancing 0.05 s per pose). Each figure is the median over 7 batches (see
+//! `common::microseconds`); the last column is Exact Surface under still water, for scale.
+//!
+//! `cargo bench --bench waves [-- large]` (`large` adds the 10⁶-triangle torus knot).
+
+mod common;
+
+use std::hint::black_box;
+
+use buoyancy::nalgebra::{Point3, Vector3};
+use buoyancy::waves::{
+    AiryComponent, AiryWaves, CalmSurface, GerstnerWaves, HeightGrid, SeaState, Spectrum,
+    WaterSurface,
+};
+use buoyancy::{Method, Traversal};
+
+fn main() {
+    let large = std::env::args().any(|a| a == "large");
+    let water = common::water::<f64>();
+    let n = 512;
+    // A smooth periodic field over 128 m: two crossing swells, 0.3 m high.
+    let heights: Vec<f64> = (0..n * n)
+        .map(|k| {
+            let (i, j) = ((k % n) as f64, (k / n) as f64);
+            let t = 2.0 * std::f64::consts::PI / n as f64;
+            0.2 * (3.0 * t * i).cos() + 0.1 * (5.0 * t * (i + j)).sin()
+        })
+        .collect();
+    let spacing = 128.0 / n as f64;
+    let grid = HeightGrid::new(
+        heights,
+        n,
+        n,
+        Point3::new(-64.0, 0.0, -64.0),
+        Vector3::x() * spacing,
+        Vector3::z() * spacing,
+        true,
+    )
+    .unwrap();
+    let airy = AiryWaves::new(
+        (0..8)
+            .map(|i| AiryComponent {
+                amplitude: 0.05,
+                wavelength: 3.0 + 1.7 * i as f64,
+                direction: Vector3::new((i as f64).cos(), 0.0, (i as f64).sin()),
+                phase: 0.7 * i as f64,
+            })
+            .collect(),
+        None,
+    )
+    .unwrap();
+    let jonswap = AiryWaves::from_sea_state(
+        &SeaState {
+            spectrum: Spectrum::Jonswap { gamma: 3.3 },
+            significant_height: 0.4,
+            peak_period: 3.0,
+            direction: Vector3::x(),
+            spreading: Some(10.0),
+            components: 64,
+            seed: 1,
+        },
+        &water,
+        None,
+    )
+    .unwrap();
+    let gerstner = GerstnerWaves::new(airy.components()[..3].to_vec()).unwrap();
+    let surfaces: [(&str, &dyn WaterSurface<f64>); 5] = [
+        ("calm", &CalmSurface),
+        ("grid 512²", &grid),
+        ("Airy ×8", &airy),
+        ("JONSWAP ×64", &jonswap),
+        ("Gerstner ×3", &gerstner),
+    ];
+    print!("| model |");
+    for (name, _) in &surfaces {
+        print!(" {name} |");
+    }
+    println!(" still water, Exact Surface |");
+    println!("|---|{}---|", "---|".repeat(surfaces.len()));
+    for model in common::models::<f64>(large) {
+        let poses = common::poses(&model.mesh);
+        print!("| {} |", model.name);
+        for (_, surface) in &surfaces {
+            let us = common::microseconds(poses.len(), || {
+                for (k, pose) in poses.iter().enumerate() {
+                    let time = 0.05 * k as f64;
+                    black_box(
+                        model
+                            .mesh
+                            .buoyancy_in_waves(pose, &water, *surface, time)
+                            .unwrap(),
+                    );
+                }
+            });
+            print!(" {us:.1} |");
+        }
+        let us = common::microseconds(poses.len(), || {
+            for pose in &poses {
+                black_box(
+                    model
+                        .mesh
+                        .buoyancy_with(pose, &water, Method::ExactSurface, Traversal::Auto)
+                        .unwrap(),
+                );
+            }
+        });
+        println!(" {us:.1} |");
+    }
+}
