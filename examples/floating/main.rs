@@ -46,7 +46,10 @@ struct Body {
 /// A sample model scaled to `radius` (bounding radius about its centroid) and centered, with
 /// the file's z axis turned to y when `z_up`; the procedural torus knot if the file is absent.
 fn model(file: &str, radius: f64, z_up: bool) -> Result<(String, Mesh<f64>), buoyancy::Error> {
-    let loaded = buoyancy_samples::mesh_path(file).and_then(|p| buoyancy::io::load::<f64>(p).ok());
+    // A file that exists but does not load is an error, not a silent substitute.
+    let loaded = buoyancy_samples::mesh_path(file)
+        .map(buoyancy::io::load::<f64>)
+        .transpose()?;
     let (name, (vertices, triangles)) = match loaded {
         Some(shape) => (file.trim_end_matches(".obj").to_string(), shape),
         None => {

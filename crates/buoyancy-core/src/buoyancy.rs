@@ -24,9 +24,10 @@ use crate::Real;
 /// water. Volume, force and torque are then as computed (zero, or round-off), never NaN.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Buoyancy<T: Real> {
-    /// Volume under water, m³. Never negative for [`Method::Exact`] (a body touching the water
-    /// within round-off has nothing under water); may be negative for the approximate methods
-    /// on non-convex meshes, whose missing contributions are not sign-definite.
+    /// Volume under water, m³. Never negative for [`Method::Exact`], also for a body touching
+    /// the water within round-off (see `tests/contact.rs`); it may be negative for the
+    /// approximate methods on non-convex meshes, whose missing contributions are not
+    /// sign-definite.
     pub submerged_volume: T,
     /// Point of application of the force, world frame, m.
     pub center_of_buoyancy: Point3<T>,

@@ -8,7 +8,7 @@
 //! link: 32 bytes, two nodes to a cache line, all the walk reads. What a node entirely under
 //! water adds for each method lives beside the nodes, indexed by node (see `node_sums`).
 //!
-//! # Query
+//! # The walk
 //! With `n` the up normal and `h_c` the centroid's height (both in the mesh frame), the heights
 //! of the points of a node's box lie in `[Σₖ min(nₖloₖ, nₖhiₖ) + h_c, Σₖ max(nₖloₖ, nₖhiₖ) + h_c]`.
 //! Computed in `T`, either end is within `4ε·(M + |h_c|)` of its exact value, and so is every

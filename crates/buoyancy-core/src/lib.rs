@@ -14,7 +14,7 @@
 //!   evaluation's work across rayon's thread pool, bit-identical to the serial result.
 //!
 //! Without default features the crate is `no_std` (it needs `alloc`): everything but reading
-//! files works, e.g. on `wasm32-unknown-unknown`.
+//! files and parsing PLY (`io::load`, `io::parse_ply`) works, e.g. on `wasm32-unknown-unknown`.
 //!
 //! # Frames and units
 //! A [`Mesh`] lives in its own *mesh frame* (local space). A [`Pose`] maps mesh space to world

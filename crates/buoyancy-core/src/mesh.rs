@@ -110,30 +110,37 @@ impl<T: Real> Mesh<T> {
         let stored: Vec<Vector3<T>> = relative.iter().map(|v| v.map(T::from_f64_lossy)).collect();
         let (hierarchy, order) = Hierarchy::build(&stored, &triangles);
         let layout = LeafLayout::new(&stored, &triangles, &order);
-        let terms = |i: usize| {
-            let input = &triangles[order[i] as usize];
+        // Per triangle, in leaf order: the volume terms, once, for the node sums and the
+        // per-triangle arrays alike.
+        let volume_terms: Vec<VolumeTerms> = order
+            .iter()
+            .map(|&i| VolumeTerms::new(triangles[i as usize].map(|k| relative[k as usize])))
+            .collect();
+        let node_sums = NodeSums::build(&hierarchy, |i| {
+            let VolumeTerms {
+                volume6,
+                moment24,
+                area2,
+            } = volume_terms[i];
             TriangleTerms {
+                volume6,
+                moment24,
+                area2,
                 surface: SurfaceMoments::triangle(layout.corners(i).map(|v| v.map(T::to_f64))),
-                ..volume_terms(input.map(|k| relative[k as usize]))
             }
-        };
-        let node_sums = NodeSums::build(&hierarchy, terms);
+        });
         let (mut volume_scale, mut surface_area) = (0.0, 0.0);
         let (mut tetra_volume6, mut tetra_moment24, mut normals) = (
             Vec::with_capacity(order.len()),
             Vec::with_capacity(order.len()),
             Vec::with_capacity(order.len()),
         );
-        for &i in &order {
-            let corners = triangles[i as usize].map(|k| relative[k as usize]);
-            let TriangleTerms {
-                volume6, moment24, ..
-            } = volume_terms(corners);
-            let normal = TriangleNormal::new(&corners);
-            volume_scale += volume6.abs() / 6.0;
+        for terms in &volume_terms {
+            let normal = TriangleNormal::new(&terms.area2);
+            volume_scale += terms.volume6.abs() / 6.0;
             surface_area += normal.double_area / 2.0;
-            tetra_volume6.push(T::from_f64_lossy(volume6));
-            tetra_moment24.push(moment24.map(T::from_f64_lossy));
+            tetra_volume6.push(T::from_f64_lossy(terms.volume6));
+            tetra_moment24.push(terms.moment24.map(T::from_f64_lossy));
             normals.push(normal.cast());
         }
         let bounding_radius = relative.iter().map(|v| v.norm()).fold(0.0, f64::max);
@@ -320,15 +327,26 @@ fn enclosed_volume(
     Ok((volume, middle + moment / volume, reoriented))
 }
 
-/// The volume methods' terms of a triangle of corners `[a, b, c]` (relative to the centroid):
-/// `det = a·(b×c)`, `det·(a + b + c)` and `(b − a)×(c − a)`; no surface terms.
-fn volume_terms([a, b, c]: [Vector3<f64>; 3]) -> TriangleTerms {
-    let det = a.dot(&b.cross(&c));
-    TriangleTerms {
-        volume6: det,
-        moment24: (a + b + c) * det,
-        area2: (b - a).cross(&(c - a)),
-        surface: SurfaceMoments::zero(),
+/// The volume methods' terms of a triangle, `f64`, about the centroid.
+#[derive(Clone, Copy)]
+struct VolumeTerms {
+    /// `det = a·(b×c)`.
+    volume6: f64,
+    /// `det·(a + b + c)`.
+    moment24: Vector3<f64>,
+    /// `(b − a)×(c − a)`.
+    area2: Vector3<f64>,
+}
+
+impl VolumeTerms {
+    /// The terms of the triangle of corners `[a, b, c]` (relative to the centroid).
+    fn new([a, b, c]: [Vector3<f64>; 3]) -> Self {
+        let det = a.dot(&b.cross(&c));
+        VolumeTerms {
+            volume6: det,
+            moment24: (a + b + c) * det,
+            area2: (b - a).cross(&(c - a)),
+        }
     }
 }
 
@@ -343,8 +361,8 @@ pub(crate) struct TriangleNormal<T: Real> {
 }
 
 impl TriangleNormal<f64> {
-    fn new([a, b, c]: &[Vector3<f64>; 3]) -> Self {
-        let area_vector2 = (b - a).cross(&(c - a));
+    /// From twice the area vector, `(b − a)×(c − a)`.
+    fn new(area_vector2: &Vector3<f64>) -> Self {
         let double_area = area_vector2.norm();
         let unit = if double_area > 0.0 {
             area_vector2 / double_area

@@ -10,7 +10,7 @@ use crate::Error;
 ///   surface crosses, adding the precomputed sums of the nodes entirely under water: cost
 ///   proportional to the waterline (the triangles the surface cuts) times the depth of the
 ///   hierarchy, independent of the mesh size when the waterline is not. The volume methods
-///   store six-fold volumes and moments per node, the surface methods the coefficients of
+///   store six-fold volumes, moments and area vectors per node, the surface methods the coefficients of
 ///   their pressure integrals as polynomials in the water plane (see `surface_moments`).
 /// * `Auto` (the default) takes the hierarchy on meshes of at least [`Traversal::CROSSOVER`]
 ///   triangles, and the scan otherwise.

@@ -69,28 +69,36 @@ impl<T: Real> VolumeSums<T> {
 
 /// `Exact`'s and `Improved`'s sums.
 ///
-/// The volume and the moments are summed about the centroid (`exact`, and `clipped` for
-/// `Improved`): the precomputed tetrahedra of the fully submerged triangles, the clipped parts
-/// of the cut ones and the cap, a fan from `apex`, the projection of the centroid on the water
-/// plane. For a thin submerged part of size `δ` (a corner or an edge dipping into the water, a
-/// face lying in it) those sums keep round-off of the size of the body times `δ`, which swamps
-/// a volume of order `δ³`: below `√ε` of the body's volume they do not even give its sign.
-/// For such volumes a second pass (`ROBUST`) sums the volume about `apex` instead, where the cap
-/// contributes nothing and every other term is a face of the submerged part times its distance
-/// from the plane: the fully submerged triangles as `Σ detᵢ − apex·Σ 2Aᵢ`
-/// (`2Aᵢ = (bᵢ − aᵢ)×(cᵢ − aᵢ)`, from the precomputed `detᵢ` about the centroid; a triangle lying
-/// in the surface within round-off adds nothing) and each cut triangle's submerged part `P` as
-/// `(ab − apex)·2A_P`, with `ab` a waterline point of `P`. A part of size `δ` then contributes
-/// in proportion to `δ`, and the volume keeps its sign down to dips of about `√ε` of the body's
-/// size.
+/// The first pass sums the volume and the moments about the centroid (`exact`: the
+/// precomputed tetrahedra of the fully submerged triangles, the clipped parts of the cut ones
+/// and the cap, a fan from `apex`, the projection of the centroid on the water plane) and, for
+/// `Improved`, the clipped parts about `apex` (`clipped`). Those sums add terms of the size of
+/// the body, so their round-off, about `ε·M³` (`M` the size of the body), is fixed whatever is
+/// under water: it swamps the volume of a thin part (a corner or an edge dipping into the water,
+/// a face lying in it), whose sign it can flip below about `ε` of the body's volume.
+///
+/// So when the first pass finds under `√ε·Σ|Vᵢ|` under water (`Σ|Vᵢ|` the mesh's volume
+/// scale; a choice of cost, well above where the sign is lost), a second pass (`ROBUST`) sums
+/// the volume about `apex`, where the cap contributes nothing: the fully submerged triangles as
+/// `Σ detᵢ − apex·Σ 2Aᵢ` (`2Aᵢ = (bᵢ − aᵢ)×(cᵢ − aᵢ)`, from the precomputed `detᵢ` about the
+/// centroid; a triangle lying within round-off of the surface adds nothing) and each cut
+/// triangle's submerged part `P` as `(ab − apex)·2A_P`, with `ab` a waterline point of `P`: its
+/// area times the distance from `apex` to its plane, a term of about `M·δ²` for a part of size
+/// `δ`. The round-off is then about `ε·M²·δ`, and the volume keeps its sign for dips down to
+/// about `√ε·M`; a volume left below zero by thinner dips is taken as zero.
+///
+/// The hierarchy adds the nodes whose vertices all lie below the surface, within round-off of
+/// it included, where the scan's robust pass leaves out a triangle lying within round-off of the
+/// surface: the two differ by round-off.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct ExactSums<T: Real> {
     /// The submerged volume's sums about the centroid: fully submerged triangles, clipped
     /// waterline triangles and the cap.
     pub exact: VolumeSums<T>,
-    /// `ROBUST` only: `Σ detᵢ` over the fully submerged triangles not lying in the surface.
+    /// `Σ detᵢ` over the fully submerged triangles not lying in the surface: the nodes' in both
+    /// passes (they cost nothing), the scanned triangles' in the `ROBUST` pass only.
     pub submerged_volume6: T,
-    /// `Σ 2Aᵢ` over the same triangles.
+    /// `Σ 2Aᵢ` over the same triangles, likewise.
     pub submerged_area2: Vector3<T>,
     /// `ROBUST` only: `Σ (ab − apex)·2A_P` over the submerged parts of the cut triangles.
     pub cut_volume6: T,
@@ -180,8 +188,8 @@ impl<T: Real> Mesh<T> {
     /// tetrahedra of `Fast`, the waterline triangles their clipped part, and the cap closing the
     /// submerged volume on the water plane a fan of tetrahedra from `apex`, the projection of the
     /// centroid on the plane, over the waterline segments. Only the waterline costs more than
-    /// `Fast`. When less than `√ε` of the body's volume is found under water, a second pass sums
-    /// the volume about the plane, which keeps its sign (see [`ExactSums`]).
+    /// `Fast`. When less than `√ε` of the mesh's volume scale is found under water, a second pass
+    /// sums the volume about the plane, which keeps its sign (see [`ExactSums`]).
     pub(crate) fn exact_or_improved(
         &self,
         frame: &Frame<T>,
@@ -201,34 +209,27 @@ impl<T: Real> Mesh<T> {
             first.exact.volume6
         };
         let thin = T::from_f64_lossy(6.0) * T::default_epsilon().sqrt() * self.volume_scale;
-        let (sums, volume6) = if volume6.abs() > thin {
+        let counts = first.exact.counts;
+        let (sums, volume6) = if volume6.abs() > thin || counts.full + counts.partial == 0 {
             (first, volume6)
         } else {
-            // A thin part, or nothing, under water: the volume about the plane (see
-            // `ExactSums`).
+            // A thin part under water: the volume about the plane (see `ExactSums`).
             let sums = self.volume_sums(frame, hierarchy, parallel, |s: &mut ExactSums<T>, i| {
                 self.exact_triangle::<true>(frame, &apex, improved, s, i)
             });
             let volume6 = if improved {
                 sums.submerged_volume6_about(&apex)
             } else {
-                // The submerged volume of a closed mesh is never negative: what is left below
-                // zero is the round-off of a part too thin to measure, so nothing is under
-                // water.
+                // The submerged volume of a closed mesh is never negative. For dips below about
+                // √ε·M the round-off can still flip its sign (tests/contact.rs finds such
+                // cases): what is left below zero is nothing measurable under water.
                 sums.volume6(&apex).max(T::zero())
             };
             (sums, volume6)
         };
         let ExactSums { exact, clipped, .. } = sums;
         if !improved {
-            let sums = if volume6 > T::zero() {
-                VolumeSums { volume6, ..exact }
-            } else {
-                VolumeSums {
-                    counts: exact.counts,
-                    ..VolumeSums::zero()
-                }
-            };
+            let sums = VolumeSums { volume6, ..exact };
             return self.volume_result(frame, water, sums, Vector3::zeros());
         }
         // Improved = tetrahedra from `apex` over the fully submerged triangles. First moment

@@ -80,8 +80,9 @@ proptest! {
     }
 }
 
-/// The case that was reported: a rotated cube dipping a corner 2·10⁻⁸ m into the water had a
-/// negative submerged volume and a downward force from `Exact`.
+/// The case that was reported: a rotated cube whose lowest corner was within 2·10⁻⁸ m of the
+/// surface had a negative submerged volume and a downward force from `Exact`. Dips of that size
+/// and smaller, into the water, were what went wrong (a corner that far above is dry).
 #[test]
 fn a_cube_dipping_a_corner() {
     let (v, t) = shape::cube::<f64>(1).unwrap();

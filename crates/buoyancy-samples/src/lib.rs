@@ -66,14 +66,20 @@ mod tests {
 
     #[test]
     fn the_default_location_is_beside_the_repository() {
-        if std::env::var_os(MESHES_VARIABLE).is_none() {
-            let repository = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
-            let expected = repository.join("../shared/meshes");
-            assert_eq!(
-                meshes_location().canonicalize().ok(),
-                expected.canonicalize().ok()
-            );
-            assert!(repository.join("Cargo.toml").is_file());
+        if std::env::var_os(MESHES_VARIABLE).is_some() {
+            return;
         }
+        // `<repository>/../shared/meshes`: the folder above the repository exists, whether or
+        // not the meshes do.
+        let repository = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
+        assert!(repository.join("Cargo.toml").is_file());
+        let location = meshes_location();
+        assert_eq!(location.file_name().unwrap(), "meshes");
+        let shared = location.parent().unwrap();
+        assert_eq!(shared.file_name().unwrap(), "shared");
+        assert_eq!(
+            shared.parent().unwrap().canonicalize().unwrap(),
+            repository.join("..").canonicalize().unwrap()
+        );
     }
 }

@@ -128,8 +128,10 @@ pub fn tilt_degrees(rb: &RigidBody) -> f32 {
 /// A sample mesh scaled so that its bounding radius is `radius`, wound outward and centered on
 /// its centroid, or the procedural torus knot (with a note) when the file is absent.
 pub fn model(file: &str, radius: f64) -> (String, Mesh<f64>) {
-    let loaded =
-        buoyancy_samples::mesh_path(file).and_then(|p| buoyancy_core::io::load::<f64>(p).ok());
+    // A file that exists but does not load fails the test.
+    let loaded = buoyancy_samples::mesh_path(file).map(|p| {
+        buoyancy_core::io::load::<f64>(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+    });
     let (name, (v, t)) = match loaded {
         Some(shape) => (file.to_string(), shape),
         None => {
