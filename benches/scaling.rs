@@ -9,6 +9,8 @@
 //!
 //! With `BUOYANCY_SCALING_REPLOT=1` it measures nothing: it redraws `benches/scaling.png` from
 //! the rows of `benches/scaling.csv` (to restyle the plot without the minutes of measurement).
+//! With `BUOYANCY_SCALING_MEMORY=1` it times nothing either: it prints the hierarchy's bytes
+//! per triangle at every size.
 
 mod common;
 #[path = "common/plot_font.rs"]
@@ -43,6 +45,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         );
         return Ok(());
     }
+    let memory_only =
+        std::env::var_os("BUOYANCY_SCALING_MEMORY").is_some_and(|v| !v.is_empty() && v != "0");
     let water = common::water::<f64>();
     // (segments, sides): 2·segments·sides triangles.
     let sizes = [
@@ -62,6 +66,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut rows = Vec::new();
     for (segments, sides) in sizes {
         let (v, t) = shape::torus_knot::<f64>(2, 3, 1.0, 0.25, segments, sides).unwrap();
+        if memory_only {
+            let mesh = Mesh::new(v, t)?;
+            let bytes = mesh.hierarchy_bytes() as f64 / mesh.triangle_count() as f64;
+            println!(
+                "{} triangles: {bytes:.1} hierarchy bytes per triangle",
+                mesh.triangle_count()
+            );
+            continue;
+        }
         let started = Instant::now();
         let mesh = Mesh::new(v, t)?;
         let build_ms = started.elapsed().as_secs_f64() * 1e3;
@@ -97,6 +110,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         };
         eprintln!("{} triangles done", row.triangles);
         rows.push(row);
+    }
+    if memory_only {
+        return Ok(());
     }
 
     println!(
