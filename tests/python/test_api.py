@@ -37,6 +37,15 @@ def test_lists_tuples_and_views() -> None:
         assert buoyancy.Mesh(vertices, TET_F).volume == pytest.approx(1 / 6)
 
 
+def test_fortran_ordered_arrays_are_read_in_index_order() -> None:
+    cube = shapes.cube()
+    fortran = buoyancy.Mesh(np.asfortranarray(cube.vertices), np.asfortranarray(cube.faces))
+    assert fortran == cube
+    positions = np.asfortranarray([[0.0, 0.3, 0.0], [0.0, -0.2, 0.0]])
+    assert not positions.flags.c_contiguous
+    assert cube.buoyancy_batch(positions, None).volume.round(12).tolist() == [0.2, 0.7]
+
+
 def test_properties() -> None:
     mesh = buoyancy.Mesh(TET_V, TET_F)
     assert mesh.vertices.dtype == np.float64 and mesh.vertices.shape == (4, 3)

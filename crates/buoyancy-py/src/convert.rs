@@ -106,15 +106,17 @@ pub struct Floats {
 }
 
 /// Converts any array-like to float64 (`numpy.asarray` semantics, so ints, float32, nested
-/// lists all work). Fails with a `ValueError` naming `name`.
+/// lists all work), its values in C order whatever its memory layout. Fails with a
+/// `ValueError` naming `name`.
 pub fn floats(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Floats> {
     let array: PyArrayLikeDyn<'_, f64, AllowTypeChange> = obj
         .extract()
         .map_err(|e| arg_error(name, format!("expected an array of numbers ({e})")))?;
     let shape = array.shape().to_vec();
+    // `as_slice` also accepts a Fortran-ordered array, in its memory order.
     let values = match array.as_slice() {
-        Ok(slice) => slice.to_vec(),
-        Err(_) => array.as_array().iter().copied().collect(),
+        Ok(slice) if array.is_c_contiguous() => slice.to_vec(),
+        _ => array.as_array().iter().copied().collect(),
     };
     Ok(Floats { shape, values })
 }
