@@ -2,7 +2,9 @@
 
 The five methods of Fábián's *Approximate and exact buoyancy calculation for real-time floating
 simulation of meshes*, computed in Rust (the ``buoyancy-core`` crate) against a flat water plane
-of any orientation, with the torque of the pressure field integrated exactly.
+of any orientation, with the torque of the pressure field integrated exactly; and the exact
+hydrostatic pressure under waves (:class:`AiryWave`, :class:`Waves`, :class:`GerstnerWaves`,
+:class:`HeightGrid` or any vectorised function, given to :class:`Water` as ``waves``).
 
 >>> import numpy as np, buoyancy
 >>> cube = buoyancy.shapes.cube()                     # the unit cube about the origin
@@ -18,27 +20,35 @@ pose ``(position, rotation)`` maps it to the world, ``x_world = R @ x_mesh + pos
 from . import shapes
 from ._core import (
     METHODS,
+    AiryWave,
     Buoyancy,
     BuoyancyBatch,
     Damping,
     DampingCoefficients,
+    GerstnerWaves,
+    HeightGrid,
     Mesh,
     MeshDefect,
     MeshError,
     Water,
+    Waves,
     load,
 )
 
 __all__ = [
     "METHODS",
+    "AiryWave",
     "Buoyancy",
     "BuoyancyBatch",
     "Damping",
     "DampingCoefficients",
+    "GerstnerWaves",
+    "HeightGrid",
     "Mesh",
     "MeshDefect",
     "MeshError",
     "Water",
+    "Waves",
     "load",
     "shapes",
 ]

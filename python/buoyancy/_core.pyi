@@ -1,7 +1,8 @@
 """Type stubs of the compiled module ``buoyancy._core`` (re-exported by ``buoyancy``)."""
 
 import os
-from typing import Final, Literal, Protocol, SupportsIndex, TypeAlias, final
+from collections.abc import Callable, Iterable
+from typing import Final, Literal, Protocol, SupportsIndex, TypeAlias, final, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -20,19 +21,26 @@ _DefectKind: TypeAlias = Literal[
 ]
 _FloatArray: TypeAlias = npt.NDArray[np.float64]
 _IntArray: TypeAlias = npt.NDArray[np.int64]
+# A vectorised surface: the (N, 3) still-plane points and the time (s) to N elevations (m).
+_SurfaceFunction: TypeAlias = Callable[[_FloatArray, float], npt.ArrayLike]
+_Surface: TypeAlias = AiryWave | Waves | GerstnerWaves | HeightGrid | _SurfaceFunction
 
 __all__ = [
     "MATRIX_TOLERANCE",
     "METHODS",
     "QUATERNION_TOLERANCE",
+    "AiryWave",
     "Buoyancy",
     "BuoyancyBatch",
     "Damping",
     "DampingCoefficients",
+    "GerstnerWaves",
+    "HeightGrid",
     "Mesh",
     "MeshDefect",
     "MeshError",
     "Water",
+    "Waves",
     "cube",
     "load",
     "torus",
@@ -77,8 +85,123 @@ class _HasToGeometry(Protocol):
     def to_geometry(self) -> _HasVerticesAndFaces: ...
 
 @final
+class AiryWave:
+    """One linear wave component ``a cos(k·q − ω t + φ)``, SI units."""
+
+    def __new__(
+        cls,
+        amplitude: float,
+        wavelength: float,
+        direction: npt.ArrayLike | None = (1.0, 0.0, 0.0),
+        phase: float = 0.0,
+    ) -> AiryWave: ...
+    @property
+    def amplitude(self) -> float:
+        """m."""
+    @property
+    def wavelength(self) -> float:
+        """m."""
+    @property
+    def direction(self) -> _FloatArray:
+        """Direction of travel as given, shape (3,)."""
+    @property
+    def phase(self) -> float:
+        """rad."""
+    @property
+    def wavenumber(self) -> float:
+        """``2π / wavelength``, rad/m."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> tuple[type[AiryWave], tuple[float, float, tuple[float, float, float], float]]: ...
+
+@final
+class Waves:
+    """Linear (Airy) waves: a sum of components over water of a depth (``None``: deep)."""
+
+    def __new__(cls, components: Iterable[AiryWave], depth: float | None = None) -> Waves: ...
+    @classmethod
+    def jonswap(
+        cls,
+        hs: float,
+        tp: float,
+        gamma: float = 3.3,
+        direction: npt.ArrayLike | None = (1.0, 0.0, 0.0),
+        spreading: float | None = None,
+        n: int = 64,
+        seed: int = 0,
+        depth: float | None = None,
+        water: Water | None = None,
+    ) -> Waves:
+        """Components drawn from a JONSWAP spectrum of significant height ``hs`` (m), peak period ``tp`` (s)."""
+    @classmethod
+    def pierson_moskowitz(
+        cls,
+        hs: float,
+        tp: float,
+        direction: npt.ArrayLike | None = (1.0, 0.0, 0.0),
+        spreading: float | None = None,
+        n: int = 64,
+        seed: int = 0,
+        depth: float | None = None,
+        water: Water | None = None,
+    ) -> Waves:
+        """Components drawn from a Pierson–Moskowitz spectrum."""
+    @property
+    def components(self) -> tuple[AiryWave, ...]: ...
+    @property
+    def depth(self) -> float | None:
+        """m; ``None`` for deep water."""
+    def angular_frequencies(self, gravity: float = 9.81) -> _FloatArray:
+        """``ω`` of each component, rad/s, from the dispersion relation."""
+    def __len__(self) -> int: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> tuple[Callable[..., Waves], tuple[object, ...]]: ...
+
+@final
+class GerstnerWaves:
+    """Trochoidal waves in deep water; steepness ``Σ k a`` below 1."""
+
+    def __new__(cls, components: Iterable[AiryWave]) -> GerstnerWaves: ...
+    @property
+    def components(self) -> tuple[AiryWave, ...]: ...
+    @property
+    def steepness(self) -> float:
+        """``Σ kᵢ aᵢ``."""
+    def __len__(self) -> int: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> tuple[type[GerstnerWaves], tuple[tuple[AiryWave, ...]]]: ...
+
+@final
+class HeightGrid:
+    """Elevations on a regular grid (rows, columns), bilinear, optionally periodic; axes from the water's normal."""
+
+    def __new__(
+        cls,
+        heights: npt.ArrayLike,
+        spacing: float | npt.ArrayLike,
+        origin: npt.ArrayLike | None = (0.0, 0.0),
+        periodic: bool = True,
+    ) -> HeightGrid: ...
+    def set_heights(self, heights: npt.ArrayLike) -> None:
+        """Replaces the heights in place, shape (rows, columns)."""
+    @property
+    def heights(self) -> _FloatArray:
+        """Shape (rows, columns), m."""
+    @property
+    def shape(self) -> tuple[int, int]: ...
+    @property
+    def spacing(self) -> tuple[float, float]: ...
+    @property
+    def origin(self) -> tuple[float, float]: ...
+    @property
+    def periodic(self) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(
+        self,
+    ) -> tuple[type[HeightGrid], tuple[_FloatArray, tuple[float, float], tuple[float, float], bool]]: ...
+
+@final
 class Water:
-    """A body of still water with a flat surface ``dot(normal, p) == level``, SI units."""
+    """A body of water: its still plane ``dot(normal, p) == level`` and optionally waves, SI units."""
 
     def __new__(
         cls,
@@ -86,6 +209,7 @@ class Water:
         gravity: float = 9.81,
         level: float = 0.0,
         normal: npt.ArrayLike | None = (0.0, 1.0, 0.0),
+        waves: _Surface | None = None,
     ) -> Water:
         """``gravity`` is a magnitude, m/s²; its direction is ``-normal``."""
     @property
@@ -100,8 +224,19 @@ class Water:
     @property
     def specific_weight(self) -> float:
         """``density * gravity``, N/m³."""
+    @property
+    def waves(self) -> _Surface | None:
+        """The waves as given; ``None`` for still water."""
+    @overload
+    def elevation(self, points: tuple[float, float, float], time: float = 0.0) -> float:
+        """η at one point projected onto the still plane, m."""
+    @overload
+    def elevation(self, points: npt.ArrayLike, time: float = 0.0) -> _FloatArray | float:
+        """η at the points projected onto the still plane, m: shape (N,), or a float for shape (3,)."""
     def __eq__(self, other: object, /) -> bool: ...
-    def __reduce__(self) -> tuple[type[Water], tuple[float, float, float, tuple[float, float, float]]]: ...
+    def __reduce__(
+        self,
+    ) -> tuple[type[Water], tuple[float, float, float, tuple[float, float, float], _Surface | None]]: ...
 
 @final
 class Buoyancy:
@@ -289,6 +424,7 @@ class Mesh:
         method: _MethodName | str = "exact",
         about: npt.ArrayLike | None = None,
         traversal: _TraversalName | str = "auto",
+        time: float = 0.0,
     ) -> Buoyancy: ...
     def buoyancy_batch(
         self,
@@ -299,6 +435,7 @@ class Mesh:
         about: npt.ArrayLike | None = None,
         threads: int | None = None,
         traversal: _TraversalName | str = "auto",
+        times: float | npt.ArrayLike | None = None,
     ) -> BuoyancyBatch: ...
     def damping(
         self,

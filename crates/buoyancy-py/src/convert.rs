@@ -35,6 +35,15 @@ pub fn real_or(obj: Option<&Bound<'_, PyAny>>, name: &str, default: f64) -> PyRe
     given(obj).map_or(Ok(default), |o| real(o, name))
 }
 
+/// A time, s: a finite number, or 0 when the argument is absent or `None`.
+pub fn time(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<f64> {
+    let t = real_or(obj, name, 0.0)?;
+    if !t.is_finite() {
+        return Err(arg_error(name, "must be finite (s)"));
+    }
+    Ok(t)
+}
+
 /// A non-negative integer (a Python `int`, a NumPy integer, anything with `__index__`).
 pub fn count(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<usize> {
     match obj.extract::<i64>() {

@@ -8,6 +8,7 @@
 //! `>>>` examples), not rustdoc: brackets in them are slices, not links.
 #![allow(rustdoc::broken_intra_doc_links)]
 
+mod airy;
 mod arrays;
 mod batch;
 mod convert;
@@ -16,12 +17,17 @@ mod defects;
 mod detach;
 mod errors;
 mod format;
+mod gerstner;
+mod height_grid;
 mod io;
 mod mesh;
 mod result;
+mod sea_state;
 mod shapes;
+mod surface_function;
 mod threads;
 mod water;
+mod water_waves;
 
 use buoyancy_core::Method;
 use pyo3::prelude::*;
@@ -32,6 +38,10 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     m.add_class::<mesh::PyMesh>()?;
     m.add_class::<water::PyWater>()?;
+    m.add_class::<airy::PyAiryWave>()?;
+    m.add_class::<airy::PyWaves>()?;
+    m.add_class::<gerstner::PyGerstnerWaves>()?;
+    m.add_class::<height_grid::PyHeightGrid>()?;
     m.add_class::<result::PyBuoyancy>()?;
     m.add_class::<result::PyBuoyancyBatch>()?;
     m.add_class::<damping::PyDamping>()?;

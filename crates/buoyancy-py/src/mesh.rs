@@ -12,7 +12,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyType;
 
 use crate::arrays;
-use crate::batch::{About, Batch};
+use crate::batch::{About, Batch, batch_times};
 use crate::convert::{self, floats, given, shape_str};
 use crate::damping::{PyDamping, PyDampingCoefficients};
 use crate::detach::detach_if_large;
@@ -21,6 +21,7 @@ use crate::format::{g, g3};
 use crate::result::{PyBuoyancy, PyBuoyancyBatch, Row};
 use crate::threads;
 use crate::water::PyWater;
+use crate::water_waves::{Failure, WaterWaves, method_and_traversal};
 
 /// Vertices and triangles, as `buoyancy_core::Mesh::new` takes them.
 pub type Shape = (Vec<Point3<f64>>, Vec<[u32; 3]>);
@@ -183,10 +184,14 @@ impl PyMesh {
         Ok(Pose::from_parts(Translation3::from(t), r))
     }
 
-    /// The `water` argument, default `Water()`.
-    fn water(water: Option<&Bound<'_, PyAny>>) -> PyResult<buoyancy_core::Water<f64>> {
-        Ok(convert::instance::<PyWater>(water, "water")?
-            .map_or_else(buoyancy_core::Water::default, |w| w.get().inner))
+    /// The `water` argument, default `Water()`: its still plane, and its waves.
+    fn water<'a>(
+        water: Option<&'a Bound<'_, PyAny>>,
+    ) -> PyResult<(buoyancy_core::Water<f64>, Option<&'a WaterWaves>)> {
+        Ok(match convert::instance::<PyWater>(water, "water")? {
+            Some(w) => (w.get().inner, w.get().waves.as_ref()),
+            None => (buoyancy_core::Water::default(), None),
+        })
     }
 
     /// Faces as int64, outward, or as given (`original`: flipped back if reoriented).
@@ -320,19 +325,28 @@ impl PyMesh {
     /// method : str
     ///     ``"fast"``, ``"improved"``, ``"exact"`` (default), ``"fast_surface"`` or
     ///     ``"exact_surface"``, in any case, with ``_``, ``-`` or nothing between the words
-    ///     (``"ExactSurface"``, the Rust name, works too).
+    ///     (``"ExactSurface"``, the Rust name, works too). On a water with waves only
+    ///     ``"exact_surface"``, the default there (the others assume a flat surface: a
+    ///     ``ValueError``).
     /// traversal : str
     ///     ``"auto"`` (default), ``"scan"`` or ``"hierarchy"``: visit every triangle, or only the
     ///     nodes of the mesh's bounding-volume hierarchy that the surface crosses.
     ///     ``"auto"`` takes the hierarchy from 128 triangles up.
-    ///     All give the same result up to round-off.
+    ///     All give the same result up to round-off. On waves every triangle is visited
+    ///     (``"hierarchy"`` is a ``ValueError``).
     /// about : array_like, shape (3,), optional
     ///     World point the torque is taken about; default the body's center of mass (the mesh
     ///     centroid moved by the pose).
+    /// time : float
+    ///     The time of the water's waves, s, finite (default 0); still water does not depend on it.
     ///
     /// Returns
     /// -------
     /// Buoyancy
+    ///     On waves: the hydrostatic pressure of the waves integrated exactly over the wetted
+    ///     surface (sampled at the vertices, once per vertex); ``volume`` is the volume implied by
+    ///     the force along the normal, ``force / (density * gravity)``, and ``center`` a point of
+    ///     the force's line of action.
     ///
     /// Examples
     /// --------
@@ -342,9 +356,16 @@ impl PyMesh {
     /// (0.75, [0.0, 7357.5, 0.0])
     /// >>> cube.buoyancy(position=(0, -0.25, 0), method="ExactSurface").method
     /// 'exact_surface'
+    ///
+    /// On a surface tilted by the slope 0.1 along x the force leans against the slope:
+    ///
+    /// >>> ramp = buoyancy.Water(waves=lambda p, t: 0.1 * p[:, 0])
+    /// >>> fx, fy, _ = cube.buoyancy(position=(0, -0.25, 0), water=ramp).force
+    /// >>> round(float(fx / fy), 12)
+    /// -0.1
     #[pyo3(
-        signature = (position=None, rotation=None, water=None, method=None, about=None, traversal=None),
-        text_signature = "(self, position=(0, 0, 0), rotation=None, water=None, method='exact', about=None, traversal='auto')"
+        signature = (position=None, rotation=None, water=None, method=None, about=None, traversal=None, time=None),
+        text_signature = "(self, position=(0, 0, 0), rotation=None, water=None, method='exact', about=None, traversal='auto', time=0.0)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn buoyancy(
@@ -356,24 +377,31 @@ impl PyMesh {
         method: Option<&Bound<'_, PyAny>>,
         about: Option<&Bound<'_, PyAny>>,
         traversal: Option<&Bound<'_, PyAny>>,
+        time: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyBuoyancy> {
-        let method = convert::method(method)?;
-        let traversal = convert::traversal(traversal)?;
+        let (water, waves) = PyMesh::water(water)?;
+        let (method, traversal) = method_and_traversal(method, traversal, waves.is_some())?;
         let pose = PyMesh::pose(position, rotation)?;
         let about = match given(about) {
             Some(a) => Some(Point3::from(convert::vector3(a, "about")?)),
             None => None,
         };
-        let water = PyMesh::water(water)?;
+        let time = convert::time(time, "time")?;
         let mesh = &self.inner;
+        // A Python surface function takes the interpreter lock back around its call.
         let b = detach_if_large(py, mesh.triangle_count(), move || {
-            let b = mesh.buoyancy_with(&pose, &water, method, traversal)?;
-            Ok::<_, Error>(match about {
+            let b = match waves {
+                None => mesh
+                    .buoyancy_with(&pose, &water, method, traversal)
+                    .map_err(Failure::Core)?,
+                Some(waves) => waves.buoyancy(mesh, &pose, &water, time)?,
+            };
+            Ok::<_, Failure>(match about {
                 Some(q) => b.about(&q),
                 None => b,
             })
         })
-        .map_err(|e| to_py(e, None))?;
+        .map_err(|f| f.into_py(None))?;
         Ok(PyBuoyancy {
             row: Row::new(&b),
             method,
@@ -398,6 +426,10 @@ impl PyMesh {
     ///     pool (``RAYON_NUM_THREADS``, else one thread per core).
     /// traversal : str
     ///     ``"auto"`` (default), ``"scan"`` or ``"hierarchy"``, as in :meth:`buoyancy`.
+    /// times : float or array_like, shape (K,), optional
+    ///     The time of the water's waves at each pose, s, finite; one for every pose, or one per
+    ///     pose; default 0. A callable surface is called once per pose, holding the interpreter
+    ///     lock only around the call.
     ///
     /// Returns
     /// -------
@@ -412,9 +444,19 @@ impl PyMesh {
     /// >>> batch = cube.buoyancy_batch(np.c_[0 * heights, heights, 0 * heights], None)
     /// >>> batch.volume.round(12).tolist()
     /// [1.0, 1.0, 0.5, 0.0, 0.0]
+    ///
+    /// A box riding a swell for one period, one time per pose:
+    ///
+    /// >>> swell = buoyancy.Waves([buoyancy.AiryWave(amplitude=0.1, wavelength=8.0)])
+    /// >>> period = 2 * np.pi / swell.angular_frequencies()[0]
+    /// >>> times = np.linspace(0, period, 5)
+    /// >>> still = np.zeros((5, 3))
+    /// >>> heave = cube.buoyancy_batch(still, None, water=buoyancy.Water(waves=swell), times=times)
+    /// >>> heave.force[:, 1].round().tolist()     # N: crest, node, trough, node, crest
+    /// [5811.0, 4905.0, 3999.0, 4905.0, 5811.0]
     #[pyo3(
-        signature = (positions, rotations=None, water=None, method=None, about=None, threads=None, traversal=None),
-        text_signature = "(self, positions, rotations, water=None, method='exact', about=None, threads=None, traversal='auto')"
+        signature = (positions, rotations=None, water=None, method=None, about=None, threads=None, traversal=None, times=None),
+        text_signature = "(self, positions, rotations, water=None, method='exact', about=None, threads=None, traversal='auto', times=None)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn buoyancy_batch(
@@ -427,9 +469,10 @@ impl PyMesh {
         about: Option<&Bound<'_, PyAny>>,
         threads: Option<&Bound<'_, PyAny>>,
         traversal: Option<&Bound<'_, PyAny>>,
+        times: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyBuoyancyBatch> {
-        let method = convert::method(method)?;
-        let traversal = convert::traversal(traversal)?;
+        let (water, waves) = PyMesh::water(water)?;
+        let (method, traversal) = method_and_traversal(method, traversal, waves.is_some())?;
         let translations = convert::rows3(positions, "positions")?;
         let k = translations.len();
         let rotations = match given(rotations) {
@@ -446,6 +489,7 @@ impl PyMesh {
             None => vec![UnitQuaternion::identity(); k],
         };
         let about = About::parse(about, k)?;
+        let times = batch_times(times, k)?;
         let pool = given(threads)
             .map(|t| threads::pool(convert::count(t, "threads")?))
             .transpose()?;
@@ -456,14 +500,16 @@ impl PyMesh {
                 .zip(rotations)
                 .map(|(t, r)| Pose::from_parts(Translation3::from(t), r))
                 .collect(),
-            water: PyMesh::water(water)?,
+            water,
+            waves,
+            times,
             method,
             traversal,
             about,
         };
         let rows = py
             .detach(|| batch.run(pool.as_deref()))
-            .map_err(|(i, e)| to_py(e, Some(&format!("pose {i}"))))?;
+            .map_err(|(i, f)| f.into_py(Some(&format!("pose {i}"))))?;
         Ok(PyBuoyancyBatch::new(py, rows, method))
     }
 
@@ -481,7 +527,7 @@ impl PyMesh {
     /// angular_velocity : array_like, shape (3,)
     ///     Angular velocity, world frame, rad/s; default zero.
     /// water : Water, optional
-    ///     Default ``Water()``.
+    ///     Default ``Water()``; without waves (the model assumes a flat surface: a ``ValueError``).
     /// coefficients : DampingCoefficients, optional
     ///     Default ``DampingCoefficients()``.
     /// about : array_like, shape (3,), optional
@@ -532,7 +578,13 @@ impl PyMesh {
             Some(a) => Some(convert::vector3(a, "about")?),
             None => None,
         };
-        let water = PyMesh::water(water)?;
+        let (water, waves) = PyMesh::water(water)?;
+        if waves.is_some() {
+            return Err(arg_error(
+                "water",
+                "the damping model assumes a flat water surface, and this water has waves: pass a Water without waves",
+            ));
+        }
         let coefficients =
             convert::instance::<PyDampingCoefficients>(coefficients, "coefficients")?
                 .map_or_else(buoyancy_core::DampingCoefficients::default, |c| {

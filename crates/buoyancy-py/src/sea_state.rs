@@ -1,0 +1,251 @@
+//! Irregular seas from a spectrum (`Waves.jonswap`, `Waves.pierson_moskowitz`): the core's
+//! `SeaState`, drawn into Airy components for the gravity and up normal of a water.
+
+use buoyancy_core::Water;
+use buoyancy_core::nalgebra::Vector3;
+use buoyancy_core::waves::{AiryWaves, SeaState, Spectrum};
+use pyo3::prelude::*;
+use pyo3::types::{PyTuple, PyType};
+
+use crate::convert;
+use crate::errors::{arg_error, to_py, type_error};
+use crate::format::g;
+use crate::water::PyWater;
+
+/// The arguments of `Waves.jonswap` and `Waves.pierson_moskowitz`, as Python passes them.
+pub struct SeaArguments<'a, 'py> {
+    pub hs: &'a Bound<'py, PyAny>,
+    pub tp: &'a Bound<'py, PyAny>,
+    /// JONSWAP's `γ` (`None` when absent: 3.3), or `None` for Pierson–Moskowitz.
+    pub gamma: Option<Option<&'a Bound<'py, PyAny>>>,
+    pub direction: Option<&'a Bound<'py, PyAny>>,
+    pub spreading: Option<&'a Bound<'py, PyAny>>,
+    pub n: Option<&'a Bound<'py, PyAny>>,
+    pub seed: Option<&'a Bound<'py, PyAny>>,
+    pub depth: Option<&'a Bound<'py, PyAny>>,
+    pub water: Option<&'a Bound<'py, PyAny>>,
+}
+
+/// Where a `Waves`' components were drawn from: the sea state, the depth, and the water whose
+/// gravity (the wavelengths) and up normal (the spreading) they were drawn for.
+#[derive(Clone, Copy)]
+pub struct SeaOrigin {
+    sea: SeaState<f64>,
+    depth: Option<f64>,
+    water: Water<f64>,
+}
+
+/// JONSWAP's default peak enhancement, the North Sea mean.
+const DEFAULT_GAMMA: f64 = 3.3;
+/// The default number of components.
+const DEFAULT_COMPONENTS: usize = 64;
+
+impl SeaOrigin {
+    /// The components of the sea state `args` describe, and where they come from. Each
+    /// argument is checked by the core alone (beside valid values of the others), so that its
+    /// error names it.
+    pub fn draw(py: Python<'_>, args: SeaArguments<'_, '_>) -> PyResult<(AiryWaves<f64>, Self)> {
+        let spectrum = match args.gamma {
+            None => Spectrum::PiersonMoskowitz,
+            Some(gamma) => Spectrum::Jonswap {
+                gamma: convert::real_or(gamma, "gamma", DEFAULT_GAMMA)?,
+            },
+        };
+        let direction = match convert::given(args.direction) {
+            Some(d) => convert::vector3(d, "direction")?,
+            None => Vector3::x(),
+        };
+        let spreading = match convert::given(args.spreading) {
+            Some(s) => Some(convert::real(s, "spreading")?),
+            None => None,
+        };
+        let seed = match convert::given(args.seed) {
+            Some(s) => s
+                .extract::<u64>()
+                .map_err(|_| type_error("seed", "an integer from 0 to 2**64 - 1", s))?,
+            None => 0,
+        };
+        let depth = match convert::given(args.depth) {
+            Some(d) => Some(convert::real(d, "depth")?),
+            None => None,
+        };
+        let still = convert::instance::<PyWater>(args.water, "water")?
+            .map_or_else(Water::default, |w| w.get().inner);
+        let sea = SeaState {
+            spectrum,
+            significant_height: convert::real(args.hs, "hs")?,
+            peak_period: convert::real(args.tp, "tp")?,
+            direction,
+            spreading,
+            components: convert::count_or(args.n, "n", DEFAULT_COMPONENTS)?,
+            seed,
+        };
+        let valid = SeaState {
+            spectrum: Spectrum::PiersonMoskowitz,
+            significant_height: 1.0,
+            peak_period: 1.0,
+            direction: still
+                .normal()
+                .into_inner()
+                .cross(&Vector3::x())
+                .try_normalize(0.5)
+                .unwrap_or_else(Vector3::z),
+            spreading: None,
+            components: 1,
+            seed: 0,
+        };
+        let alone = [
+            (
+                "hs",
+                SeaState {
+                    significant_height: sea.significant_height,
+                    ..valid
+                },
+            ),
+            (
+                "tp",
+                SeaState {
+                    peak_period: sea.peak_period,
+                    ..valid
+                },
+            ),
+            (
+                "gamma",
+                SeaState {
+                    spectrum: sea.spectrum,
+                    ..valid
+                },
+            ),
+            (
+                "spreading",
+                SeaState {
+                    spreading: sea.spreading,
+                    ..valid
+                },
+            ),
+            (
+                "n",
+                SeaState {
+                    components: sea.components.min(1),
+                    ..valid
+                },
+            ),
+            (
+                "direction",
+                SeaState {
+                    direction: sea.direction,
+                    ..valid
+                },
+            ),
+        ];
+        for (name, candidate) in alone {
+            AiryWaves::from_sea_state(&candidate, &still, None)
+                .map_err(|e| to_py(e, Some(name)))?;
+        }
+        AiryWaves::from_sea_state(&valid, &still, depth).map_err(|e| to_py(e, Some("depth")))?;
+        let waves = py
+            .detach(|| AiryWaves::from_sea_state(&sea, &still, depth))
+            .map_err(|e| to_py(e, None))?;
+        Ok((
+            waves,
+            SeaOrigin {
+                sea,
+                depth,
+                water: still,
+            },
+        ))
+    }
+
+    /// Checks that `water` has the gravity and up normal the components were drawn for.
+    pub fn check(&self, water: &Water<f64>) -> PyResult<()> {
+        let drawn_for = self.water;
+        if drawn_for.gravity() == water.gravity() && drawn_for.normal() == water.normal() {
+            return Ok(());
+        }
+        let (n, m) = (drawn_for.normal(), water.normal());
+        Err(arg_error(
+            "waves",
+            format!(
+                "the sea state's components were drawn for gravity {} m/s² and up normal ({}, {}, {}), and this water has gravity {} and normal ({}, {}, {}): pass this water as water= to Waves.{}",
+                g(drawn_for.gravity()),
+                g(n.x),
+                g(n.y),
+                g(n.z),
+                g(water.gravity()),
+                g(m.x),
+                g(m.y),
+                g(m.z),
+                self.constructor()
+            ),
+        ))
+    }
+
+    /// The name of the classmethod that draws this sea state.
+    fn constructor(&self) -> &'static str {
+        match self.sea.spectrum {
+            Spectrum::PiersonMoskowitz => "pierson_moskowitz",
+            Spectrum::Jonswap { .. } => "jonswap",
+        }
+    }
+
+    /// `Waves.jonswap(…)` or `Waves.pierson_moskowitz(…)`, with every argument but the water.
+    pub fn repr(&self) -> String {
+        let s = &self.sea;
+        let gamma = match s.spectrum {
+            Spectrum::Jonswap { gamma } => format!(", gamma={}", g(gamma)),
+            Spectrum::PiersonMoskowitz => String::new(),
+        };
+        let optional = |x: Option<f64>| x.map_or_else(|| "None".into(), g);
+        format!(
+            "Waves.{}(hs={}, tp={}{gamma}, direction=({}, {}, {}), spreading={}, n={}, seed={}, depth={})",
+            self.constructor(),
+            g(s.significant_height),
+            g(s.peak_period),
+            g(s.direction.x),
+            g(s.direction.y),
+            g(s.direction.z),
+            optional(s.spreading),
+            s.components,
+            s.seed,
+            optional(self.depth)
+        )
+    }
+
+    /// What `__reduce__` returns: the classmethod and its arguments, which draw the same
+    /// components again (the draw is deterministic for a seed).
+    pub fn reduce<'py>(
+        &self,
+        cls: &Bound<'py, PyType>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let py = cls.py();
+        let s = &self.sea;
+        let direction = (s.direction.x, s.direction.y, s.direction.z);
+        let water = Py::new(py, PyWater::still(self.water))?;
+        let args = match s.spectrum {
+            Spectrum::Jonswap { gamma } => (
+                s.significant_height,
+                s.peak_period,
+                gamma,
+                direction,
+                s.spreading,
+                s.components,
+                s.seed,
+                self.depth,
+                water,
+            )
+                .into_pyobject(py)?,
+            Spectrum::PiersonMoskowitz => (
+                s.significant_height,
+                s.peak_period,
+                direction,
+                s.spreading,
+                s.components,
+                s.seed,
+                self.depth,
+                water,
+            )
+                .into_pyobject(py)?,
+        };
+        Ok((cls.getattr(self.constructor())?, args))
+    }
+}

@@ -1,0 +1,217 @@
+//! The waves of a `Water`: Airy waves, a height grid or a Python callable, as given, and the
+//! evaluations on them (buoyancy, elevations), whose failures name what failed.
+
+use buoyancy_core::nalgebra::Point3;
+use buoyancy_core::waves::WaterSurface;
+use buoyancy_core::{Buoyancy, Error, Mesh, Method, Pose, Traversal, Water};
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+
+use crate::airy::{PyAiryWave, PyWaves};
+use crate::convert;
+use crate::errors::{arg_error, to_py, type_error};
+use crate::gerstner::PyGerstnerWaves;
+use crate::height_grid::PyHeightGrid;
+use crate::surface_function::{FunctionFailure, SurfaceFunction};
+
+/// What the `waves` argument of `Water` accepts, for error messages.
+const EXPECTED: &str = "a buoyancy.AiryWave, buoyancy.Waves, buoyancy.GerstnerWaves, buoyancy.HeightGrid or a callable f(points, t)";
+
+/// The surface the core integrates under.
+enum Surface {
+    Airy(PyWaves),
+    Gerstner(PyGerstnerWaves),
+    Grid(Py<PyHeightGrid>),
+    Function(Py<PyAny>),
+}
+
+/// A `Water`'s waves: the object given, and the surface it stands for.
+pub struct WaterWaves {
+    given: Py<PyAny>,
+    surface: Surface,
+}
+
+/// Why an evaluation on waves failed.
+pub enum Failure {
+    /// The core's error.
+    Core(Error),
+    /// The Python surface function's.
+    Function(FunctionFailure),
+}
+
+impl Failure {
+    /// The Python exception, its message prefixed with `argument` when given (`"pose 3"`): the
+    /// core's errors as [`to_py`] maps them, a surface function's exception as it raised it, its
+    /// wrong result as a `ValueError` naming `waves`.
+    pub fn into_py(self, argument: Option<&str>) -> PyErr {
+        match self {
+            Failure::Core(e) => to_py(e, argument),
+            Failure::Function(FunctionFailure::Raised(e)) => e,
+            Failure::Function(FunctionFailure::Invalid(message)) => {
+                PyValueError::new_err(match argument {
+                    Some(a) => format!("{a}: waves: {message}"),
+                    None => format!("waves: {message}"),
+                })
+            }
+        }
+    }
+}
+
+/// Two waves are equal when they are the same surface: equal Airy waves, equal grids, the same
+/// callable.
+impl PartialEq for WaterWaves {
+    fn eq(&self, other: &Self) -> bool {
+        match (&self.surface, &other.surface) {
+            (Surface::Airy(a), Surface::Airy(b)) => a == b,
+            (Surface::Gerstner(a), Surface::Gerstner(b)) => a == b,
+            (Surface::Grid(a), Surface::Grid(b)) => a.get() == b.get(),
+            (Surface::Function(a), Surface::Function(b)) => a.is(b),
+            _ => false,
+        }
+    }
+}
+
+impl WaterWaves {
+    /// The `waves` argument of a `Water` whose still plane is `water`. Airy and Gerstner waves
+    /// are evaluated once at the origin, so that a direction along the water's normal is
+    /// reported here; a sea state must have been drawn for the water's gravity and normal.
+    pub fn parse(obj: &Bound<'_, PyAny>, water: &Water<f64>) -> PyResult<Self> {
+        let surface = if let Ok(wave) = obj.cast::<PyAiryWave>() {
+            Surface::Airy(PyWaves::single(wave.get())?)
+        } else if let Ok(waves) = obj.cast::<PyWaves>() {
+            if let Some(origin) = &waves.get().origin {
+                origin.check(water)?;
+            }
+            Surface::Airy(waves.get().clone())
+        } else if let Ok(waves) = obj.cast::<PyGerstnerWaves>() {
+            Surface::Gerstner(waves.get().clone())
+        } else if let Ok(grid) = obj.cast::<PyHeightGrid>() {
+            Surface::Grid(grid.clone().unbind())
+        } else if obj.is_callable() {
+            Surface::Function(obj.clone().unbind())
+        } else {
+            return Err(type_error("waves", EXPECTED, obj));
+        };
+        let directions: Option<&dyn WaterSurface<f64>> = match &surface {
+            Surface::Airy(waves) => Some(&waves.inner),
+            Surface::Gerstner(waves) => Some(&waves.inner),
+            _ => None,
+        };
+        if let Some(waves) = directions {
+            waves
+                .elevations(water, &[Point3::origin()], 0.0, &mut [0.0])
+                .map_err(|e| to_py(e, Some("waves")))?;
+        }
+        Ok(WaterWaves {
+            given: obj.clone().unbind(),
+            surface,
+        })
+    }
+
+    /// The object given as `waves`.
+    pub fn given<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        self.given.bind(py).clone()
+    }
+
+    /// The object to pickle in place of the waves: the one given, if it pickles (a Python
+    /// callable pickles only by reference, as a module-level function).
+    pub fn to_pickle<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let given = self.given(py);
+        if let Surface::Function(_) = self.surface
+            && let Err(cause) = py.import("pickle")?.call_method1("dumps", (&given,))
+        {
+            let error = PyTypeError::new_err(
+                "waves: a Water whose waves are a Python callable pickles only if the callable does \
+                 (a module-level function does, a lambda or a closure does not); rebuild the Water \
+                 from the callable's parameters instead",
+            );
+            error.set_cause(py, Some(cause));
+            return Err(error);
+        }
+        Ok(given)
+    }
+
+    /// Runs `work` on the surface at evaluation, and maps its error: the surface function's
+    /// failure, if it failed, else the core's error.
+    fn on_surface<R>(
+        &self,
+        water: &Water<f64>,
+        work: impl FnOnce(&dyn WaterSurface<f64>) -> Result<R, Error>,
+    ) -> Result<R, Failure> {
+        match &self.surface {
+            Surface::Airy(waves) => work(&waves.inner).map_err(Failure::Core),
+            Surface::Gerstner(waves) => work(&waves.inner).map_err(Failure::Core),
+            Surface::Grid(grid) => grid.get().with_surface(water, work).map_err(Failure::Core),
+            Surface::Function(function) => {
+                let surface = SurfaceFunction::new(function);
+                let result = work(&surface);
+                match (result, surface.failure()) {
+                    (Err(_), Some(failure)) => Err(Failure::Function(failure)),
+                    (result, _) => result.map_err(Failure::Core),
+                }
+            }
+        }
+    }
+
+    /// The buoyancy of `mesh` at `pose` in `water` under these waves at `time` (s): the core's
+    /// `Mesh::buoyancy_in_waves`.
+    pub fn buoyancy(
+        &self,
+        mesh: &Mesh<f64>,
+        pose: &Pose<f64>,
+        water: &Water<f64>,
+        time: f64,
+    ) -> Result<Buoyancy<f64>, Failure> {
+        self.on_surface(water, |surface| {
+            mesh.buoyancy_in_waves(pose, water, surface, time)
+        })
+    }
+
+    /// The elevations at the still-plane `points` of `water` at `time` (s), m.
+    pub fn elevations(
+        &self,
+        water: &Water<f64>,
+        points: &[Point3<f64>],
+        time: f64,
+    ) -> Result<Vec<f64>, Failure> {
+        let mut elevations = vec![0.0; points.len()];
+        self.on_surface(water, |surface| {
+            surface.elevations(water, points, time, &mut elevations)
+        })?;
+        Ok(elevations)
+    }
+}
+
+/// The method and traversal of a query in water with waves (`on_waves`) or without: on waves
+/// only Exact Surface integrates the pressure (the others assume a flat surface), the default
+/// there, and every triangle is visited (the hierarchy's sums assume a flat surface).
+pub fn method_and_traversal(
+    method: Option<&Bound<'_, PyAny>>,
+    traversal: Option<&Bound<'_, PyAny>>,
+    on_waves: bool,
+) -> PyResult<(Method, Traversal)> {
+    let traversal = convert::traversal(traversal)?;
+    if !on_waves {
+        return Ok((convert::method(method)?, traversal));
+    }
+    let method = match convert::given(method) {
+        Some(_) => convert::method(method)?,
+        None => Method::ExactSurface,
+    };
+    if method != Method::ExactSurface {
+        return Err(arg_error(
+            "method",
+            format!(
+                "'{}' assumes a flat water surface, and the water has waves: on waves only 'exact_surface' integrates the pressure (the default there)",
+                method.name()
+            ),
+        ));
+    }
+    if traversal == Traversal::Hierarchy {
+        return Err(arg_error(
+            "traversal",
+            "the water has waves, and on waves every triangle is visited (the hierarchy's sums assume a flat surface): pass 'auto' or 'scan'",
+        ));
+    }
+    Ok((method, traversal))
+}
