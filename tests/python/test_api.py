@@ -497,6 +497,15 @@ def test_docstring_examples() -> None:
         "Mesh.damping": buoyancy.Mesh.damping,
         "DampingCoefficients": buoyancy.DampingCoefficients,
         "DampingCoefficients.off": buoyancy.DampingCoefficients.off,
+        "AiryWave": buoyancy.AiryWave,
+        "Waves": buoyancy.Waves,
+        "Waves.jonswap": buoyancy.Waves.jonswap,
+        "Waves.pierson_moskowitz": buoyancy.Waves.pierson_moskowitz,
+        "Waves.angular_frequencies": buoyancy.Waves.angular_frequencies,
+        "GerstnerWaves": buoyancy.GerstnerWaves,
+        "HeightGrid": buoyancy.HeightGrid,
+        "HeightGrid.set_heights": buoyancy.HeightGrid.set_heights,
+        "Water.elevation": buoyancy.Water.elevation,
     }
     attempted = {name: run_examples(obj.__doc__ or "", name) for name, obj in objects.items()}
     assert all(attempted.values()), f"docstrings without examples: {[n for n, k in attempted.items() if not k]}"
@@ -534,6 +543,10 @@ def test_stubs_match_the_module() -> None:
         "DampingCoefficients",
         "MeshError",
         "MeshDefect",
+        "AiryWave",
+        "Waves",
+        "GerstnerWaves",
+        "HeightGrid",
         "load",
         "cube",
         "uv_sphere",
@@ -550,6 +563,10 @@ def test_stubs_match_the_module() -> None:
         buoyancy.Damping,
         buoyancy.DampingCoefficients,
         buoyancy.MeshDefect,
+        buoyancy.AiryWave,
+        buoyancy.Waves,
+        buoyancy.GerstnerWaves,
+        buoyancy.HeightGrid,
     ):
         public = {n for n in dir(cls) if not n.startswith("_")}
         for n in public:
