@@ -8,6 +8,10 @@ segments, ``F(h) = π/3 (h − 1)² (h + 2)``), with ρg = 1 and the centroid at
 
 It writes one PNG per body (``accuracy_<body>.png``: force above, absolute error below, log
 scale) and ``figure4.png`` with all four, and prints the largest error of each method.
+
+``python -m buoyancy.plots waves --out DIR`` draws a body on a wave (its triangles coloured by the
+wave's hydrostatic pressure, side view) and the heave force on a box over a wave period against
+the analytic curve (see :mod:`buoyancy.wave_plots`).
 """
 
 from __future__ import annotations
@@ -154,6 +158,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     )
     acc.add_argument("--samples", type=int, default=199, help="heights per body (default 199)")
     acc.add_argument("--small", action="store_true", help="the two coarse bodies only (quick)")
+    wav = commands.add_parser("waves", help="a body on a wave, and a box's heave force over a wave period")
+    wav.add_argument(
+        "--out", type=pathlib.Path, default=pathlib.Path("out"), help="folder for the PNGs (default ./out)"
+    )
+    wav.add_argument("--samples", type=int, default=65, help="times over the wave period (default 65)")
+    wav.add_argument("--small", action="store_true", help="coarser meshes (quick)")
     args = parser.parse_args(argv)
     if args.samples < 2:
         parser.error("--samples must be at least 2")
@@ -162,7 +172,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     except ImportError:
         print("the plots need matplotlib: pip install 'buoyancy[plot]'", file=sys.stderr)
         return 2
-    accuracy(args.out, args.samples, args.small)
+    if args.command == "waves":
+        from .wave_plots import waves
+
+        waves(args.out, args.samples, args.small)
+    else:
+        accuracy(args.out, args.samples, args.small)
     return 0
 
 

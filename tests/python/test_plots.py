@@ -1,4 +1,5 @@
-"""`python -m buoyancy.plots accuracy`: the paper's Figure 4 as PNG files."""
+"""`python -m buoyancy.plots accuracy`: the paper's Figure 4 as PNG files; `… waves`: a body on a
+wave and a box's heave force over a wave period."""
 
 from __future__ import annotations
 
@@ -9,7 +10,8 @@ import sys
 import numpy as np
 import pytest
 
-from buoyancy import METHODS, plots
+import buoyancy
+from buoyancy import METHODS, plots, wave_plots
 
 pytest.importorskip("matplotlib", reason="the plots need matplotlib (pip install 'buoyancy[plot]')")
 
@@ -45,8 +47,43 @@ def test_accuracy_command_writes_pngs(tmp_path: pathlib.Path) -> None:
     assert "Exact Surface" in run.stdout
 
 
+def test_box_heave_follows_the_analytic_curve() -> None:
+    box = wave_plots.BoxInWave(resolution=16)
+    times, force, analytic = wave_plots.box_heave_data(box, samples=9)
+    assert times.shape == force.shape == analytic.shape == (9,)
+    reference = 1000 * 9.81 * box.beam * box.length * box.draft
+    assert np.max(np.abs(force - analytic)) < 1e-3 * reference
+    assert np.ptp(force) > 0.2 * reference  # the wave moves it
+
+
+def test_vertex_pressures_are_hydrostatic_in_the_wave() -> None:
+    water = buoyancy.Water(waves=lambda p, t: 0.1 + 0 * p[:, 0])
+    vertices, pressure = wave_plots.vertex_pressures(buoyancy.shapes.cube(), (0, 0, 0), water, 0.0)
+    expected = 1000 * 9.81 * np.maximum(0.1 - vertices[:, 1], 0.0)
+    np.testing.assert_allclose(pressure, expected, rtol=1e-15)
+
+
+def test_waves_command_writes_pngs(tmp_path: pathlib.Path) -> None:
+    out = tmp_path / "figures"
+    run = subprocess.run(
+        [sys.executable, "-m", "buoyancy.plots", "waves", "--out", str(out), "--small", "--samples", "9"],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert run.returncode == 0, run.stderr
+    names = sorted(p.name for p in out.iterdir())
+    assert names == ["waves_body.png", "waves_box_heave.png"]
+    for name in names:
+        data = (out / name).read_bytes()
+        assert data.startswith(PNG) and len(data) > 10_000
+    assert "largest |F − F_analytic| / ρgBLT" in run.stdout
+
+
 def test_bad_arguments() -> None:
     with pytest.raises(SystemExit):
         plots.main(["accuracy", "--samples", "1"])
     with pytest.raises(SystemExit):
         plots.main(["nonsense"])
+    with pytest.raises(SystemExit):
+        plots.main(["waves", "--samples", "0"])
