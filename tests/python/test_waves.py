@@ -422,6 +422,7 @@ NAN = float("nan")
             TypeError,
             "^waves: expected a buoyancy.AiryWave, buoyancy.Waves, .*float$",
         ),
+        (lambda: buoyancy.Water(waves=buoyancy.Waves), TypeError, "^waves: expected .*, got type$"),
         (
             lambda: buoyancy.Water(waves=buoyancy.AiryWave(1.0, 2.0, (0, 1, 0))),
             ValueError,

@@ -1,11 +1,12 @@
-//! The waves of a `Water`: Airy waves, a height grid or a Python callable, as given, and the
-//! evaluations on them (buoyancy, elevations), whose failures name what failed.
+//! The waves of a `Water`: Airy or Gerstner waves, a height grid or a Python callable, as given,
+//! and the evaluations on them (buoyancy, elevations), whose failures name what failed.
 
 use buoyancy_core::nalgebra::Point3;
 use buoyancy_core::waves::WaterSurface;
 use buoyancy_core::{Buoyancy, Error, Mesh, Method, Pose, Traversal, Water};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
+use pyo3::types::PyType;
 
 use crate::airy::{PyAiryWave, PyWaves};
 use crate::convert;
@@ -87,7 +88,7 @@ impl WaterWaves {
             Surface::Gerstner(waves.get().clone())
         } else if let Ok(grid) = obj.cast::<PyHeightGrid>() {
             Surface::Grid(grid.clone().unbind())
-        } else if obj.is_callable() {
+        } else if obj.is_callable() && !obj.is_instance_of::<PyType>() {
             Surface::Function(obj.clone().unbind())
         } else {
             return Err(type_error("waves", EXPECTED, obj));
