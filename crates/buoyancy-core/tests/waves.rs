@@ -249,3 +249,88 @@ fn skipping_the_dry_vertices_changes_nothing() {
         }
     }
 }
+
+fn one_wave(amplitude: f64, wavelength: f64, phase: f64) -> AiryWaves<f64> {
+    AiryWaves::new(
+        vec![AiryComponent {
+            amplitude,
+            wavelength,
+            direction: Vector3::x(),
+            phase,
+        }],
+        Some(30.0),
+    )
+    .unwrap()
+}
+
+/// Moving the body and the wave together changes nothing: a body moved by `Δ` along the wave,
+/// in a wave of phase `φ − k·Δ`, or observed `Δt` later, in a wave of phase `φ + ω·Δt`, feels
+/// the force and torque it felt.
+#[test]
+fn moving_body_and_wave_together_agree() {
+    let water = Water::default();
+    let (wavelength, shift, delay) = (7.0, 2.3, 0.8);
+    let k = 2.0 * std::f64::consts::PI / wavelength;
+    let base = one_wave(0.2, wavelength, 0.4);
+    let omega = base.angular_frequency(0, water.gravity());
+    let moved_wave = one_wave(0.2, wavelength, 0.4 - k * shift);
+    let delayed_wave = one_wave(0.2, wavelength, 0.4 + omega * delay);
+    for (name, mesh) in all_meshes() {
+        let p = pose(0.1, -0.2 * mesh.bounding_radius(), 0.3, 0.4, 0.2, 0.9);
+        let moved = pose(
+            0.1 + shift,
+            -0.2 * mesh.bounding_radius(),
+            0.3,
+            0.4,
+            0.2,
+            0.9,
+        );
+        let reference = mesh.buoyancy_in_waves(&p, &water, &base, 1.1).unwrap();
+        let translated = mesh
+            .buoyancy_in_waves(&moved, &water, &moved_wave, 1.1)
+            .unwrap();
+        let later = mesh
+            .buoyancy_in_waves(&p, &water, &delayed_wave, 1.1 + delay)
+            .unwrap();
+        let scale = 1e-9 * (1.0 + reference.force.norm());
+        assert!(
+            (translated.force - reference.force).norm() <= scale,
+            "{name}"
+        );
+        assert!(
+            (translated.torque - reference.torque).norm() <= scale * (1.0 + mesh.bounding_radius()),
+            "{name}"
+        );
+        assert!((later.force - reference.force).norm() <= scale, "{name}");
+        assert!(
+            (later.torque - reference.torque).norm() <= scale * (1.0 + mesh.bounding_radius()),
+            "{name}"
+        );
+    }
+}
+
+/// The long-wave limit: under a wave much longer than the body, the body feels still water at
+/// the local level, `a·cos(φ)` at its position, to first order in `k` times its size.
+#[test]
+fn long_waves_are_still_water_at_the_local_level() {
+    let water = Water::default();
+    let (amplitude, phase) = (0.15, 0.9);
+    for (name, mesh) in all_meshes() {
+        let r = mesh.bounding_radius();
+        let wavelength = 1e5 * r;
+        let waves = one_wave(amplitude, wavelength, phase);
+        let level = amplitude * phase.cos();
+        let still = Water::new(1000.0, 9.81, Vector3::y(), level).unwrap();
+        let p = pose(0.0, -0.3 * r, 0.0, 0.2, 0.5, 0.1);
+        let got = mesh.buoyancy_in_waves(&p, &water, &waves, 0.0).unwrap();
+        let expected = mesh.buoyancy(&p, &still, Method::ExactSurface).unwrap();
+        let k_size = 2.0 * std::f64::consts::PI / wavelength * r;
+        let tolerance = 10.0 * k_size * water.specific_weight() * mesh.volume();
+        assert!(
+            (got.force - expected.force).norm() <= tolerance,
+            "{name}: {:?} vs {:?}",
+            got.force,
+            expected.force
+        );
+    }
+}
