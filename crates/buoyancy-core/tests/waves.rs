@@ -334,3 +334,36 @@ fn long_waves_are_still_water_at_the_local_level() {
         );
     }
 }
+
+/// A fully submerged ball under an Airy wave, hydrostatic pressure `p = ρg(η − y)`: by the
+/// divergence theorem the force is `ρg∫(−∇η, 1)dV`; for `η = a·cos(k·x + φ)` over the unit
+/// ball, `∫∂η/∂x dV = −a·k·sin φ·4π(sin k − k cos k)/k³`. The mesh samples the surface at its
+/// vertices, so the horizontal force converges as the square of the mesh spacing.
+#[test]
+fn a_submerged_ball_gets_the_divergence_theorem() {
+    let water = Water::default();
+    let (amplitude, wavelength, phase) = (0.3, 6.0, 0.7);
+    let waves = one_wave(amplitude, wavelength, phase);
+    let k = 2.0 * std::f64::consts::PI / wavelength;
+    let weight = water.specific_weight();
+    let integral = 4.0 * std::f64::consts::PI * (k.sin() - k * k.cos()) / k.powi(3);
+    let expected_x = weight * amplitude * k * phase.sin() * integral;
+    let mut errors = Vec::new();
+    for (slices, stacks) in [(32, 16), (64, 32), (128, 64)] {
+        let (v, t) = shape::uv_sphere::<f64>(1.0, slices, stacks).unwrap();
+        let ball = Mesh::new(v, t).unwrap();
+        let b = ball
+            .buoyancy_in_waves(&pose(0.0, -5.0, 0.0, 0.0, 0.0, 0.0), &water, &waves, 0.0)
+            .unwrap();
+        assert!(
+            (b.force.y / (weight * ball.volume()) - 1.0).abs() < 2e-3,
+            "{b:?}"
+        );
+        assert!(b.force.z.abs() < 1e-9 * weight);
+        errors.push((b.force.x - expected_x).abs() / expected_x.abs());
+    }
+    assert!(errors[2] < 2e-3, "{errors:?}");
+    for pair in errors.windows(2) {
+        assert!(pair[0] / pair[1] > 3.0, "second order: {errors:?}");
+    }
+}
