@@ -367,3 +367,70 @@ fn a_submerged_ball_gets_the_divergence_theorem() {
         assert!(pair[0] / pair[1] > 3.0, "second order: {errors:?}");
     }
 }
+
+mod random_seas {
+    use super::*;
+    use buoyancy_core::waves::{GerstnerWaves, SeaState, Spectrum};
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// Random meshes, poses, seas and times: finite results or typed errors, never a panic;
+        /// a sea of zero height is calm water.
+        #[test]
+        fn random_seas_give_finite_results(
+            mesh_index in 0usize..4,
+            position in (-3.0..3.0f64, -3.0..3.0f64, -3.0..3.0f64),
+            angles in (-3.2..3.2f64, -1.6..1.6f64, -3.2..3.2f64),
+            hs in prop_oneof![Just(0.0), 0.0..2.0f64],
+            tp in 1.0..12.0f64,
+            gamma in 1.0..7.0f64,
+            seed in any::<u64>(),
+            time in -100.0..100.0f64,
+            steepness in 0.0..0.9f64,
+        ) {
+            let meshes = all_meshes();
+            let (name, mesh) = meshes[mesh_index % meshes.len()];
+            let water = Water::default();
+            let p = pose(position.0, position.1, position.2, angles.0, angles.1, angles.2);
+            let sea = AiryWaves::from_sea_state(
+                &SeaState {
+                    spectrum: Spectrum::Jonswap { gamma },
+                    significant_height: hs,
+                    peak_period: tp,
+                    direction: Vector3::new(1.0, 0.0, 0.3),
+                    spreading: Some(4.0),
+                    components: 12,
+                    seed,
+                },
+                &water,
+                None,
+            )
+            .unwrap();
+            let wavelength = 8.0;
+            let gerstner = GerstnerWaves::new(vec![AiryComponent {
+                amplitude: steepness * wavelength / (2.0 * std::f64::consts::PI),
+                wavelength,
+                direction: Vector3::z(),
+                phase: 0.0,
+            }])
+            .unwrap();
+            for surface in [&sea as &dyn buoyancy_core::waves::WaterSurface<f64>, &gerstner] {
+                let b = mesh.buoyancy_in_waves(&p, &water, surface, time).unwrap();
+                let numbers = [b.submerged_volume]
+                    .into_iter()
+                    .chain(b.center_of_buoyancy.iter().copied())
+                    .chain(b.force.iter().copied())
+                    .chain(b.torque.iter().copied());
+                for x in numbers {
+                    prop_assert!(x.is_finite(), "{name}: {b:?}");
+                }
+            }
+            if hs == 0.0 {
+                let calm = mesh.buoyancy_in_waves(&p, &water, &CalmSurface, time).unwrap();
+                prop_assert_eq!(mesh.buoyancy_in_waves(&p, &water, &sea, time).unwrap(), calm);
+            }
+        }
+    }
+}
