@@ -115,6 +115,99 @@ impl<T: Real> AiryWaves<T> {
     }
 }
 
+/// The water's motion at a point under linear waves: its velocity and its local acceleration
+/// (`∂u/∂t` at the fixed point), world frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WaterMotion<T: Real> {
+    /// Velocity, m/s.
+    pub velocity: Vector3<T>,
+    /// Local acceleration `∂u/∂t`, m/s².
+    pub acceleration: Vector3<T>,
+}
+
+impl<T: Real> AiryWaves<T> {
+    /// The orbital velocity and local acceleration of the water at the world point `point` at
+    /// `time`, by linear theory: with `z` the height above the still plane, `θ = k·q − ω·t + φ`
+    /// and `d` the component's direction,
+    ///
+    /// ```text
+    /// u = Σ a·ω·C(z)·cos θ·d + a·ω·S(z)·sin θ·n,   ∂u/∂t = Σ a·ω²·C(z)·sin θ·d − a·ω²·S(z)·cos θ·n,
+    /// C(z) = cosh k(z+h)/sinh kh,   S(z) = sinh k(z+h)/sinh kh   (both e^{kz} in deep water).
+    /// ```
+    ///
+    /// Above the still plane (in a crest) the values at the still plane are used (no
+    /// stretching); below the bottom, those at the bottom.
+    ///
+    /// ```
+    /// use buoyancy_core::waves::{AiryComponent, AiryWaves};
+    /// use buoyancy_core::Water;
+    /// use nalgebra::{Point3, Vector3};
+    ///
+    /// let swell = AiryWaves::new(
+    ///     vec![AiryComponent { amplitude: 0.5, wavelength: 20.0, direction: Vector3::x(), phase: 0.0 }],
+    ///     None,
+    /// )?;
+    /// let water = Water::default();
+    /// // Under the crest the water moves with the wave at a·ω, less with depth: e^{kz}.
+    /// let omega = swell.angular_frequency(0, water.gravity());
+    /// let k = swell.components()[0].wavenumber();
+    /// let motion = swell.water_motion(&water, &Point3::new(0.0, -2.0, 0.0), 0.0)?;
+    /// assert!((motion.velocity.x - 0.5 * omega * (-2.0 * k).exp()).abs() < 1e-12);
+    /// # Ok::<(), buoyancy_core::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::InvalidSurface`] if a direction is along the water's up normal.
+    pub fn water_motion(
+        &self,
+        water: &Water<T>,
+        point: &Point3<T>,
+        time: T,
+    ) -> Result<WaterMotion<T>, Error> {
+        let n = water.normal().into_inner();
+        let height = water.height(point).min(T::zero());
+        let q = water.project(point);
+        let mut motion = WaterMotion {
+            velocity: Vector3::zeros(),
+            acceleration: Vector3::zeros(),
+        };
+        for (index, c) in self.components.iter().enumerate() {
+            let direction = horizontal_direction(water, &c.direction)?;
+            let k = c.wavenumber();
+            let omega = self.angular_frequency(index, water.gravity());
+            let (cosh_ratio, sinh_ratio) = depth_ratios(k, height, self.depth);
+            let theta = (direction * k).dot(&q.coords) - omega * time + c.phase;
+            let (sin, cos) = theta.sin_cos();
+            let speed = c.amplitude * omega;
+            motion.velocity +=
+                direction * (speed * cosh_ratio * cos) + n * (speed * sinh_ratio * sin);
+            motion.acceleration += direction * (speed * omega * cosh_ratio * sin)
+                - n * (speed * omega * sinh_ratio * cos);
+        }
+        Ok(motion)
+    }
+}
+
+/// `cosh k(z+h)/sinh kh` and `sinh k(z+h)/sinh kh` at height `z ≤ 0` (clamped to the bottom
+/// `−h`), written with decaying exponentials so that neither overflows for deep water:
+/// `(e^{kz} ± e^{−k(z+2h)})/(1 − e^{−2kh})`; `e^{kz}` for both in deep water.
+fn depth_ratios<T: Real>(k: T, z: T, depth: Option<T>) -> (T, T) {
+    match depth {
+        None => {
+            let e = (k * z).exp();
+            (e, e)
+        }
+        Some(h) => {
+            let z = z.max(-h);
+            let two = T::from_f64_lossy(2.0);
+            let up = (k * z).exp();
+            let down = (-k * (z + two * h)).exp();
+            let denominator = T::one() - (-two * k * h).exp();
+            ((up + down) / denominator, (up - down) / denominator)
+        }
+    }
+}
+
 impl<T: Real> WaterSurface<T> for AiryWaves<T> {
     fn elevations(
         &self,
@@ -222,5 +315,70 @@ mod tests {
                 .elevations(&Water::default(), &[Point3::origin()], 0.0, &mut eta)
                 .is_err()
         );
+    }
+
+    /// Linear theory's kinematics: incompressible (`∇·u = 0`), the surface moves with the water
+    /// (`w = ∂η/∂t` at the still plane), the acceleration is `∂u/∂t`, the velocity decays as
+    /// `e^{kz}` in deep water; checked by finite differences.
+    #[test]
+    fn orbital_motion_is_linear_theory() {
+        let water = Water::default();
+        for depth in [None, Some(6.0)] {
+            let waves = AiryWaves::new(
+                vec![
+                    AiryComponent {
+                        amplitude: 0.3,
+                        wavelength: 9.0,
+                        direction: Vector3::x(),
+                        phase: 0.4,
+                    },
+                    AiryComponent {
+                        amplitude: 0.2,
+                        wavelength: 5.0,
+                        direction: Vector3::new(0.6, 0.0, 0.8),
+                        phase: 1.9,
+                    },
+                ],
+                depth,
+            )
+            .unwrap();
+            let motion = |p: Point3<f64>, t: f64| waves.water_motion(&water, &p, t).unwrap();
+            let (p, t, d) = (Point3::new(1.3, -1.1, 0.7), 2.2, 1e-5);
+            let divergence = (0..3)
+                .map(|axis| {
+                    let mut e = Vector3::zeros();
+                    e[axis] = d;
+                    (motion(p + e, t).velocity[axis] - motion(p - e, t).velocity[axis]) / (2.0 * d)
+                })
+                .sum::<f64>();
+            assert!(divergence.abs() < 1e-7, "{depth:?}: {divergence}");
+            let dudt = (motion(p, t + d).velocity - motion(p, t - d).velocity) / (2.0 * d);
+            assert!(
+                (dudt - motion(p, t).acceleration).norm() < 1e-7,
+                "{depth:?}"
+            );
+            let surface = Point3::new(1.3, 0.0, 0.7);
+            let eta = |t: f64| {
+                let mut e = [0.0];
+                waves.elevations(&water, &[surface], t, &mut e).unwrap();
+                e[0]
+            };
+            let detadt = (eta(t + d) - eta(t - d)) / (2.0 * d);
+            assert!(
+                (motion(surface, t).velocity.y - detadt).abs() < 1e-7,
+                "{depth:?}"
+            );
+            // Above the still plane: the values at the still plane.
+            assert_eq!(motion(Point3::new(1.3, 0.2, 0.7), t), motion(surface, t));
+        }
+        let deep = AiryWaves::new(vec![wave(10.0)], None).unwrap();
+        let k = wave(10.0).wavenumber();
+        let at = |y: f64| {
+            deep.water_motion(&water, &Point3::new(0.3, y, 0.0), 1.0)
+                .unwrap()
+                .velocity
+                .norm()
+        };
+        assert!((at(-3.0) / at(0.0) - (-3.0 * k).exp()).abs() < 1e-12);
     }
 }

@@ -28,7 +28,7 @@ mod spectrum;
 
 use nalgebra::{Point3, Vector3};
 
-pub use airy::{AiryComponent, AiryWaves};
+pub use airy::{AiryComponent, AiryWaves, WaterMotion};
 pub use gerstner::GerstnerWaves;
 pub use grid::HeightGrid;
 pub use spectrum::{SeaState, Spectrum};
