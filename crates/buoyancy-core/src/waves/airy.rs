@@ -143,7 +143,7 @@ impl<T: Real> AiryWaves<T> {
     /// use buoyancy_core::Water;
     /// use nalgebra::{Point3, Vector3};
     ///
-    /// let swell = AiryWaves::new(
+    /// let swell = AiryWaves::<f64>::new(
     ///     vec![AiryComponent { amplitude: 0.5, wavelength: 20.0, direction: Vector3::x(), phase: 0.0 }],
     ///     None,
     /// )?;
