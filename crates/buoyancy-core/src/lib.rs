@@ -49,6 +49,7 @@ mod clip;
 pub mod damping;
 mod error;
 mod frame;
+pub mod froude_krylov;
 mod hierarchy;
 pub mod io;
 mod mesh;

@@ -107,7 +107,7 @@ impl<T: Real> Mesh<T> {
     /// With a bound `b` on `|η|`, a vertex higher than `b` plus the longest edge above the
     /// still plane belongs to dry triangles only: it gets `n·x − level − b > 0` and the surface
     /// is not evaluated there.
-    fn heights_below_waves(
+    pub(crate) fn heights_below_waves(
         &self,
         frame: &Frame<T>,
         water: &Water<T>,
@@ -179,7 +179,7 @@ impl<T: Real> Mesh<T> {
 
 /// The point of the central axis of the force system (`force`, `torque` about `about`) nearest
 /// to `near`: the axis passes through `about + force × torque / |force|²` along `force`.
-fn on_line_of_action<T: Real>(
+pub(crate) fn on_line_of_action<T: Real>(
     about: &Point3<T>,
     force: &Vector3<T>,
     torque: &Vector3<T>,

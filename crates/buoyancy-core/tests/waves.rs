@@ -434,3 +434,101 @@ mod random_seas {
         }
     }
 }
+
+mod froude_krylov {
+    use super::*;
+
+    /// A fully submerged ball in deep water, Froude–Krylov pressure: the force is `ρgV` up plus
+    /// `ρV` times the water's acceleration at the center (each component of the acceleration is
+    /// harmonic, so its mean over the ball is its value there); converges with the resolution.
+    #[test]
+    fn a_submerged_ball_feels_the_water_acceleration() {
+        let water = Water::default();
+        let waves = AiryWaves::new(
+            vec![
+                AiryComponent {
+                    amplitude: 0.4,
+                    wavelength: 8.0,
+                    direction: Vector3::x(),
+                    phase: 0.3,
+                },
+                AiryComponent {
+                    amplitude: 0.2,
+                    wavelength: 5.0,
+                    direction: Vector3::new(0.6, 0.0, 0.8),
+                    phase: 2.0,
+                },
+            ],
+            None,
+        )
+        .unwrap();
+        let center = Point3::new(0.4, -2.5, -0.3);
+        let acceleration = waves
+            .water_motion(&water, &center, 1.3)
+            .unwrap()
+            .acceleration;
+        let mut errors = Vec::new();
+        for (slices, stacks) in [(24, 12), (48, 24), (96, 48)] {
+            let (v, t) = shape::uv_sphere::<f64>(1.0, slices, stacks).unwrap();
+            let ball = Mesh::new(v, t).unwrap();
+            let p = pose(center.x, center.y, center.z, 0.0, 0.0, 0.0);
+            let b = ball
+                .buoyancy_froude_krylov(&p, &water, &waves, 1.3)
+                .unwrap();
+            let expected = Vector3::y() * water.specific_weight() * ball.volume()
+                + acceleration * (water.density() * ball.volume());
+            errors.push(
+                (b.force - expected).norm()
+                    / (acceleration.norm() * water.density() * ball.volume()),
+            );
+        }
+        // Second order in the mesh spacing (the faceted ball and the sampled surface).
+        assert!(errors[2] < 2e-4, "{errors:?}");
+        for pair in errors.windows(2) {
+            assert!(pair[0] / pair[1] > 3.0, "second order: {errors:?}");
+        }
+    }
+
+    /// The Smith effect: under Froude–Krylov pressure the wave's heave force on a wall-sided box
+    /// is that of the hydrostatic pressure at its bottom scaled by `e^{−kT}`, `T` the draft:
+    /// `ρgB·[LT + a·e^{−kT}·(2/k)·sin(kL/2)·cos(ωt − φ)]` in deep water.
+    #[test]
+    fn the_heave_force_decays_with_the_draft() {
+        let (length, beam, draft, amplitude, wavelength) = (4.0, 1.0, 0.8, 0.05, 10.0);
+        let water = Water::default();
+        let waves = AiryWaves::new(
+            vec![AiryComponent {
+                amplitude,
+                wavelength,
+                direction: Vector3::x(),
+                phase: 0.3,
+            }],
+            None,
+        )
+        .unwrap();
+        let k = 2.0 * std::f64::consts::PI / wavelength;
+        let omega = waves.angular_frequency(0, water.gravity());
+        let weight = water.specific_weight();
+        let (v, t) = shape::cube::<f64>(16).unwrap();
+        let b = Mesh::new(v, t)
+            .unwrap()
+            .scaled(&Vector3::new(length, 1.0, beam))
+            .unwrap();
+        let p = pose(0.0, 0.5 - draft, 0.0, 0.0, 0.0, 0.0);
+        let mut worst: f64 = 0.0;
+        for step in 0..8 {
+            let time = step as f64 * 0.29;
+            let got = b.buoyancy_froude_krylov(&p, &water, &waves, time).unwrap();
+            let wave = amplitude
+                * (-k * draft).exp()
+                * (2.0 / k)
+                * (k * length / 2.0).sin()
+                * (0.3 - omega * time).cos();
+            let expected = weight * beam * (length * draft + wave);
+            worst =
+                worst.max((got.force.y - expected).abs() / (weight * beam * amplitude * length));
+        }
+        // The bottom is flat and the quadrature of degree 5: exact to round-off here.
+        assert!(worst < 1e-9, "{worst}");
+    }
+}

@@ -188,6 +188,20 @@ impl<T: Real> AiryWaves<T> {
     }
 }
 
+/// `cosh k(z+h)/cosh kh`, the decay with depth of linear waves' dynamic pressure, at height
+/// `z ≤ 0` (clamped to the bottom `−h`): `(e^{kz} + e^{−k(z+2h)})/(1 + e^{−2kh})`; `e^{kz}` in
+/// deep water.
+pub(crate) fn pressure_ratio<T: Real>(k: T, z: T, depth: Option<T>) -> T {
+    match depth {
+        None => (k * z).exp(),
+        Some(h) => {
+            let z = z.max(-h);
+            let two = T::from_f64_lossy(2.0);
+            ((k * z).exp() + (-k * (z + two * h)).exp()) / (T::one() + (-two * k * h).exp())
+        }
+    }
+}
+
 /// `cosh k(z+h)/sinh kh` and `sinh k(z+h)/sinh kh` at height `z ≤ 0` (clamped to the bottom
 /// `−h`), written with decaying exponentials so that neither overflows for deep water:
 /// `(e^{kz} ± e^{−k(z+2h)})/(1 − e^{−2kh})`; `e^{kz}` for both in deep water.

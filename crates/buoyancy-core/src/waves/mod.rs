@@ -28,6 +28,7 @@ mod spectrum;
 
 use nalgebra::{Point3, Vector3};
 
+pub(crate) use airy::pressure_ratio;
 pub use airy::{AiryComponent, AiryWaves, WaterMotion};
 pub use gerstner::GerstnerWaves;
 pub use grid::HeightGrid;
