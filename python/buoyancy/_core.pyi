@@ -11,6 +11,7 @@ import numpy.typing as npt
 # ("ExactSurface", "exact-surface").
 _MethodName: TypeAlias = Literal["fast", "improved", "exact", "fast_surface", "exact_surface"]
 _TraversalName: TypeAlias = Literal["auto", "scan", "hierarchy"]
+_Pressure: TypeAlias = Literal["hydrostatic", "froude_krylov"]
 _DefectKind: TypeAlias = Literal[
     "non_finite_vertex",
     "index_out_of_range",
@@ -117,7 +118,9 @@ class AiryWave:
 class Waves:
     """Linear (Airy) waves: a sum of components over water of a depth (``None``: deep)."""
 
-    def __new__(cls, components: Iterable[AiryWave], depth: float | None = None) -> Waves: ...
+    def __new__(
+        cls, components: Iterable[AiryWave], depth: float | None = None, pressure: _Pressure = "hydrostatic"
+    ) -> Waves: ...
     @classmethod
     def jonswap(
         cls,
@@ -130,6 +133,7 @@ class Waves:
         seed: int = 0,
         depth: float | None = None,
         water: Water | None = None,
+        pressure: _Pressure = "hydrostatic",
     ) -> Waves:
         """Components drawn from a JONSWAP spectrum of significant height ``hs`` (m), peak period ``tp`` (s)."""
     @classmethod
@@ -143,6 +147,7 @@ class Waves:
         seed: int = 0,
         depth: float | None = None,
         water: Water | None = None,
+        pressure: _Pressure = "hydrostatic",
     ) -> Waves:
         """Components drawn from a Pierson–Moskowitz spectrum."""
     @property
@@ -150,6 +155,9 @@ class Waves:
     @property
     def depth(self) -> float | None:
         """m; ``None`` for deep water."""
+    @property
+    def pressure(self) -> _Pressure:
+        """The pressure ``Mesh.buoyancy`` integrates under these waves."""
     def angular_frequencies(self, gravity: float = 9.81) -> _FloatArray:
         """``ω`` of each component, rad/s, from the dispersion relation."""
     def __len__(self) -> int: ...

@@ -1,6 +1,7 @@
 """Buoyancy on waves through the Python API: surfaces (Airy, sea states, Gerstner, height grids,
-callables), ``Water.elevation``, ``Mesh.buoyancy(time=…)`` and ``buoyancy_batch(times=…)``,
-against still water and analytic results; pickling, comparison and errors."""
+callables), ``Water.elevation``, ``Mesh.buoyancy(time=…)`` and ``buoyancy_batch(times=…)``, under
+the hydrostatic and the Froude–Krylov pressure, against still water and analytic results;
+pickling, comparison and errors."""
 
 from __future__ import annotations
 
@@ -132,6 +133,10 @@ def surfaces() -> dict[str, object]:
     return {
         "airy": buoyancy.Waves([buoyancy.AiryWave(0.3, 7.0), buoyancy.AiryWave(0.1, 3.0, (1, 0, 1), 0.5)], depth=8.0),
         "jonswap": buoyancy.Waves.jonswap(hs=1.0, tp=5.0, spreading=5.0, n=16, seed=3),
+        "airy froude_krylov": buoyancy.Waves(
+            [buoyancy.AiryWave(0.3, 7.0), buoyancy.AiryWave(0.1, 3.0, (1, 0, 1), 0.5)], 8.0, "froude_krylov"
+        ),
+        "jonswap froude_krylov": buoyancy.Waves.pierson_moskowitz(1.0, 5.0, n=16, seed=3, pressure="froude_krylov"),
         "gerstner": buoyancy.GerstnerWaves([buoyancy.AiryWave(0.3, 9.0), buoyancy.AiryWave(0.1, 4.0, (0.3, 0, 1))]),
         "grid": buoyancy.HeightGrid(heights, spacing=(0.25, 0.4), origin=(-5.0, -4.0)),
         "callable": lambda p, t: 0.2 * np.sin(p[:, 0] - t) * np.cos(p[:, 2]),
@@ -230,6 +235,180 @@ def test_sea_states_are_deterministic_and_have_the_requested_height() -> None:
     z_up = buoyancy.Water(normal=(0, 0, 1))
     ocean = buoyancy.Water(normal=(0, 0, 1), waves=buoyancy.Waves.jonswap(2.0, 8.0, spreading=3.0, water=z_up))
     assert np.allclose([c.direction[2] for c in ocean.waves.components], 0)
+
+
+# --- the Froude–Krylov pressure --------------------------------------------------------------
+
+
+@pytest.mark.parametrize("normal, direction", [((0, 1, 0), (1, 0, 0)), ((0, 0, 1), (1, 2, 0))])
+def test_froude_krylov_on_a_submerged_ball_is_its_weight_of_water_and_the_water_acceleration(
+    normal: tuple[float, float, float], direction: tuple[float, float, float]
+) -> None:
+    """A ball wholly under a deep-water Airy wave: ``ρ g V`` up plus ``ρ V a``, ``a`` the water's
+    acceleration at the center (harmonic, so its mean over the ball): ``A ω² e^{kz} sin θ`` along
+    the direction of travel, ``−A ω² e^{kz} cos θ`` along the normal, ``θ = k x − ω t + φ``."""
+    amplitude, wavelength, phase, radius = 0.5, 8.0, 0.4, 0.5
+    up = np.array(normal, float) / np.linalg.norm(normal)
+    along = np.array(direction, float) / np.linalg.norm(direction)
+    sea = buoyancy.Waves([buoyancy.AiryWave(amplitude, wavelength, direction, phase)], pressure="froude_krylov")
+    water = buoyancy.Water(density=1025.0, normal=normal, waves=sea)
+    ball = shapes.uv_sphere(radius, 96, 48)
+    rho, g, volume = water.density, water.gravity, ball.volume
+    k = 2 * math.pi / wavelength
+    omega = math.sqrt(g * k)
+    times = np.array([0.0, 0.7, 1.9, 3.1])
+    height = -1.5  # the top 1 m under the still plane, 0.5 m under the trough
+    centers = np.array([along * 1.3 + up * height + np.cross(up, along) * 2.0] * len(times))
+    batch = ball.buoyancy_batch(centers, None, water=water, times=times)
+    for i, t in enumerate(times):
+        theta = k * (centers[i] @ along) - omega * t + phase
+        decay = amplitude * omega**2 * math.exp(k * height)
+        acceleration = decay * math.sin(theta) * along - decay * math.cos(theta) * up
+        expected = rho * g * volume * up + rho * volume * acceleration
+        got = ball.buoyancy(centers[i], water=water, time=t)
+        assert got == batch[i]
+        assert np.linalg.norm(got.force - expected) <= 1e-3 * np.linalg.norm(expected), (t, got.force, expected)
+        # The wave part alone, to 1e-3 of itself.
+        wave_part = got.force - rho * g * volume * up
+        assert np.linalg.norm(wave_part - rho * volume * acceleration) <= 1e-3 * rho * volume * decay
+        # On the ball the pressure acts along the normals, all through the center: no torque
+        # about it; on the faceted ball, one of the order of the facets' size squared.
+        assert np.linalg.norm(got.torque) <= 1e-4 * np.linalg.norm(expected) * radius
+
+
+def test_froude_krylov_heave_on_a_box_decays_with_the_draft() -> None:
+    """The Smith effect: the heave force on a wall-sided box L × B of draft T under the
+    Froude–Krylov pressure is ``ρgB[LT + A e^{−kT}(2/k) sin(kL/2) cos(ωt − φ)]``; under the
+    hydrostatic pressure it has no ``e^{−kT}``."""
+    length, beam, draft, a, wavelength, phase = 4.0, 1.0, 0.8, 0.05, 10.0, 0.3
+    component = buoyancy.AiryWave(a, wavelength, phase=phase)
+    water = buoyancy.Water(waves=buoyancy.Waves([component], pressure="froude_krylov"))
+    k = 2 * math.pi / wavelength
+    omega = math.sqrt(water.gravity * k)
+    box = shapes.cube(16).scaled((length, 1.0, beam))
+    times = np.arange(8) * 0.29
+    batch = box.buoyancy_batch(np.tile((0.0, 0.5 - draft, 0.0), (8, 1)), None, water=water, times=times)
+    weight = water.specific_weight
+    heave = a * (2 / k) * math.sin(k * length / 2) * np.cos(omega * times - phase)
+    expected = weight * beam * (length * draft + math.exp(-k * draft) * heave)
+    scale = weight * beam * a * length
+    assert np.max(np.abs(batch.force[:, 1] - expected)) < 1e-6 * scale
+    # The decay is there: the hydrostatic pressure gives the undecayed heave force.
+    hydrostatic = buoyancy.Water(waves=buoyancy.Waves([component]))
+    still = box.buoyancy_batch(np.tile((0.0, 0.5 - draft, 0.0), (8, 1)), None, water=hydrostatic, times=times)
+    undecayed = weight * beam * (length * draft + heave)
+    assert np.max(np.abs(still.force[:, 1] - undecayed)) < 1e-4 * weight * beam * length * draft
+    assert np.max(np.abs(still.force[:, 1] - batch.force[:, 1])) > 0.3 * scale * (1 - math.exp(-k * draft))
+
+
+def test_hydrostatic_is_the_default_pressure_and_unchanged() -> None:
+    components = [buoyancy.AiryWave(0.3, 7.0), buoyancy.AiryWave(0.1, 3.0, (1, 0, 1), 0.5)]
+    default = buoyancy.Waves(components, depth=8.0)
+    explicit = buoyancy.Waves(components, depth=8.0, pressure="hydrostatic")
+    fk = buoyancy.Waves(components, depth=8.0, pressure="froude_krylov")
+    assert default.pressure == explicit.pressure == "hydrostatic" and fk.pressure == "froude_krylov"
+    assert default == explicit and default != fk and buoyancy.Water(waves=default) != buoyancy.Water(waves=fk)
+    assert buoyancy.Waves.jonswap(1.0, 5.0, n=8) == buoyancy.Waves.jonswap(1.0, 5.0, n=8, pressure=None)
+    assert buoyancy.Waves.jonswap(1.0, 5.0, n=8) != buoyancy.Waves.jonswap(1.0, 5.0, n=8, pressure="froude_krylov")
+    knot = MESHES["knot"]
+    for position in [(0.0, 0.0, 0.0), (0.3, -0.4, 0.2)]:
+        single = buoyancy.Waves([components[0]])
+        # Hydrostatic Waves equal one AiryWave given alone, as before the pressure model.
+        assert knot.buoyancy(position, water=buoyancy.Water(waves=single), time=1.1) == knot.buoyancy(
+            position, water=buoyancy.Water(waves=components[0]), time=1.1
+        )
+        a = knot.buoyancy(position, water=buoyancy.Water(waves=default), time=2.0)
+        b = knot.buoyancy(position, water=buoyancy.Water(waves=explicit), time=2.0)
+        c = knot.buoyancy(position, water=buoyancy.Water(waves=fk), time=2.0)
+        assert a == b and a.method == c.method == "exact_surface"
+        assert not np.allclose(a.force, c.force, rtol=1e-6)
+    # Calm water is calm under either pressure.
+    for mesh in MESHES.values():
+        calm = mesh.buoyancy((0.1, -0.2, 0.0), water=buoyancy.Water(waves=buoyancy.Waves([], pressure="froude_krylov")))
+        exact = mesh.buoyancy((0.1, -0.2, 0.0), method="exact_surface")
+        assert_same(calm, exact, buoyancy.Water().specific_weight * mesh.volume, rtol=1e-9)
+
+
+def test_the_pressure_pickles_and_shows_in_the_repr() -> None:
+    fk = buoyancy.Waves([buoyancy.AiryWave(0.1, 2.0)], pressure="froude_krylov")
+    assert repr(fk) == (
+        "Waves([AiryWave(amplitude=0.1, wavelength=2, direction=(1, 0, 0), phase=0)], depth=None, "
+        "pressure='froude_krylov')"
+    )
+    many = buoyancy.Waves([buoyancy.AiryWave(0.1, 2.0 + i) for i in range(5)], 10.0, "froude_krylov")
+    assert repr(many) == "Waves(5 components, depth=10, pressure='froude_krylov')"
+    pm = buoyancy.Waves.pierson_moskowitz(1.0, 6.0, n=8, pressure="froude_krylov")
+    assert repr(pm) == (
+        "Waves.pierson_moskowitz(hs=1, tp=6, direction=(1, 0, 0), spreading=None, n=8, seed=0, depth=None, "
+        "pressure='froude_krylov')"
+    )
+    z_up = buoyancy.Water(normal=(0, 0, 1))
+    js = buoyancy.Waves.jonswap(1.0, 6.0, n=8, water=z_up, pressure="froude_krylov")
+    for waves in (fk, many, pm, js):
+        again = pickle.loads(pickle.dumps(waves))
+        assert again == waves and again.pressure == "froude_krylov" and repr(again) == repr(waves)
+    water = buoyancy.Water(normal=(0, 0, 1), waves=js)
+    copy = pickle.loads(pickle.dumps(water))
+    assert copy == water and copy.waves.pressure == "froude_krylov"
+    assert "pressure='froude_krylov'" in repr(water)
+    ball = shapes.uv_sphere(0.5, 24, 12)
+    assert ball.buoyancy((0, 0, -0.2), water=copy, time=1.0) == ball.buoyancy((0, 0, -0.2), water=water, time=1.0)
+
+
+@pytest.mark.parametrize(
+    "build, error, match",
+    [
+        (
+            lambda: buoyancy.Waves([], pressure="FroudeKrylov"),
+            ValueError,
+            "^pressure: unknown pressure model 'FroudeKrylov': pass 'hydrostatic' or 'froude_krylov'$",
+        ),
+        (
+            lambda: buoyancy.Waves([], None, "linear"),
+            ValueError,
+            "^pressure: unknown pressure model 'linear': pass 'hydrostatic' or 'froude_krylov'$",
+        ),
+        (
+            lambda: buoyancy.Waves([], pressure=1),
+            TypeError,
+            "^pressure: expected 'hydrostatic' or 'froude_krylov', got int$",
+        ),
+        (lambda: buoyancy.Waves.jonswap(1.0, 8.0, pressure="fk"), ValueError, "^pressure: unknown pressure model 'fk'"),
+        (
+            lambda: buoyancy.Waves.pierson_moskowitz(1.0, 8.0, pressure=b"hydrostatic"),
+            TypeError,
+            "^pressure: expected 'hydrostatic' or 'froude_krylov', got bytes$",
+        ),
+        (
+            lambda: buoyancy.Water(
+                waves=buoyancy.Waves([buoyancy.AiryWave(0.1, 2.0, (0, 1, 0))], pressure="froude_krylov")
+            ),
+            ValueError,
+            "^waves: invalid water surface: a wave direction",
+        ),
+    ],
+)
+def test_pressure_errors_name_the_argument(build, error: type[Exception], match: str) -> None:  # type: ignore[no-untyped-def]
+    with pytest.raises(error, match=match):
+        build()
+
+
+FK_SEA = buoyancy.Water(waves=buoyancy.Waves([buoyancy.AiryWave(0.2, 5.0)], pressure="froude_krylov"))
+
+
+@pytest.mark.parametrize(
+    "call, error, match",
+    [
+        (lambda m: m.buoyancy(water=FK_SEA, method="exact"), ValueError, "^method: 'exact' assumes a flat water"),
+        (lambda m: m.buoyancy(water=FK_SEA, traversal="hierarchy"), ValueError, "^traversal: the water has waves"),
+        (lambda m: m.buoyancy(water=FK_SEA, time=NAN), ValueError, r"^time: must be finite \(s\)$"),
+        (lambda m: m.buoyancy_batch(np.zeros((2, 3)), None, FK_SEA, times=[0, NAN]), ValueError, r"^times\[1\]: must"),
+        (lambda m: m.buoyancy(position=(0, NAN, 0), water=FK_SEA), ValueError, "^position: "),
+    ],
+)
+def test_froude_krylov_query_errors_name_the_argument(call, error: type[Exception], match: str) -> None:  # type: ignore[no-untyped-def]
+    with pytest.raises(error, match=match):
+        call(shapes.cube())
 
 
 def test_gerstner_crests_are_sharper_than_troughs() -> None:

@@ -11,6 +11,7 @@ use crate::arrays;
 use crate::convert;
 use crate::errors::{arg_error, to_py, type_error};
 use crate::format::g;
+use crate::pressure::Pressure;
 use crate::sea_state::{SeaArguments, SeaOrigin};
 
 type V3 = (f64, f64, f64);
@@ -218,6 +219,16 @@ impl PyAiryWave {
 /// depth : float, optional
 ///     Depth of the water from the still level to the bottom, m, finite and positive; ``None``
 ///     (default) for deep water.
+/// pressure : str
+///     The pressure :meth:`Mesh.buoyancy` integrates over the wetted surface under these waves:
+///     ``"hydrostatic"`` (default), ``p = ρ g (η − z)`` with ``z`` the height above the still
+///     plane, what games use; or ``"froude_krylov"``, the linear Froude–Krylov pressure of the
+///     undisturbed wave, ``p = ρ g (Σ aᵢ P(kᵢ, z) cos θᵢ − z)``, whose wave part decays with depth
+///     as ``P = cosh k(z + h) / cosh k h`` (``e^{k z}`` in deep water) and is not stretched above
+///     the still plane (``P = 1`` there); integrated by a degree-5 quadrature on each wetted
+///     piece, its error falling as ``(k L)⁶`` for pieces of size ``L``. Either pressure is
+///     clipped at zero, and the wetted surface is cut where ``η − z``, interpolated linearly
+///     between the vertices, is zero.
 ///
 /// Examples
 /// --------
@@ -233,6 +244,22 @@ impl PyAiryWave {
 /// >>> b = hull.buoyancy(position=(0, -0.2, 0), water=buoyancy.Water(waves=sea), time=1.5)
 /// >>> b.method
 /// 'exact_surface'
+///
+/// Under the Froude–Krylov pressure a ball of 0.5 m radius 3 m under a 10 m swell feels, besides
+/// ``ρ g V`` up, ``ρ V`` times the water's acceleration at its center, whose component along x
+/// is ``A ω² e^{k z} sin θ`` (a quarter period after a crest passed: ``θ = −π/2``):
+///
+/// >>> fk = buoyancy.Waves([buoyancy.AiryWave(0.5, 10.0)], pressure="froude_krylov")
+/// >>> fk
+/// Waves([AiryWave(amplitude=0.5, wavelength=10, direction=(1, 0, 0), phase=0)], depth=None, pressure='froude_krylov')
+/// >>> ball = buoyancy.shapes.uv_sphere(0.5, 96, 48)
+/// >>> k = 2 * np.pi / 10.0
+/// >>> omega = np.sqrt(9.81 * k)
+/// >>> quarter = np.pi / 2 / omega                      # s; θ = −π/2 at the center
+/// >>> b = ball.buoyancy(position=(0, -3, 0), water=buoyancy.Water(waves=fk), time=quarter)
+/// >>> a_x = 0.5 * omega**2 * np.exp(-3 * k) * np.sin(-np.pi / 2)   # m/s²
+/// >>> round(float(b.force[0] / (1000 * ball.volume * a_x)), 3)
+/// 1.0
 /// >>> buoyancy.Waves([buoyancy.AiryWave(0.5, 20.0)], depth=0.0)
 /// Traceback (most recent call last):
 /// ...
@@ -240,19 +267,22 @@ impl PyAiryWave {
 ///
 /// Irregular seas come from a spectrum: :meth:`jonswap` and :meth:`pierson_moskowitz`.
 ///
-/// ``Waves`` is immutable, compares by value (its components and depth) and pickles.
+/// ``Waves`` is immutable, compares by value (its components, depth and pressure) and pickles;
+/// its repr names the pressure when it is ``"froude_krylov"``.
 #[pyclass(frozen, eq, module = "buoyancy", name = "Waves")]
 #[derive(Clone)]
 pub struct PyWaves {
     pub inner: AiryWaves<f64>,
     /// The sea state the components were drawn from, if they were.
     pub origin: Option<SeaOrigin>,
+    /// The pressure `Mesh.buoyancy` integrates under these waves.
+    pub pressure: Pressure,
 }
 
-/// Two waves are equal when their components and depth are.
+/// Two waves are equal when their components, depth and pressure are.
 impl PartialEq for PyWaves {
     fn eq(&self, other: &Self) -> bool {
-        self.inner == other.inner
+        self.inner == other.inner && self.pressure == other.pressure
     }
 }
 
@@ -263,16 +293,23 @@ impl PyWaves {
             .map(|inner| PyWaves {
                 inner,
                 origin: None,
+                pressure: Pressure::Hydrostatic,
             })
             .map_err(|e| to_py(e, Some("waves")))
     }
 
-    /// The waves of a sea state.
-    fn drawn(py: Python<'_>, args: SeaArguments<'_, '_>) -> PyResult<Self> {
+    /// The waves of a sea state, under the `pressure` argument.
+    fn drawn(
+        py: Python<'_>,
+        args: SeaArguments<'_, '_>,
+        pressure: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let pressure = Pressure::parse(pressure)?;
         let (inner, origin) = SeaOrigin::draw(py, args)?;
         Ok(PyWaves {
             inner,
             origin: Some(origin),
+            pressure,
         })
     }
 }
@@ -281,19 +318,25 @@ impl PyWaves {
 impl PyWaves {
     #[new]
     #[pyo3(
-        signature = (components, depth=None),
-        text_signature = "(components, depth=None)"
+        signature = (components, depth=None, pressure=None),
+        text_signature = "(components, depth=None, pressure='hydrostatic')"
     )]
-    fn new(components: &Bound<'_, PyAny>, depth: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
+    fn new(
+        components: &Bound<'_, PyAny>,
+        depth: Option<&Bound<'_, PyAny>>,
+        pressure: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
         let parsed = airy_components(components)?;
         let depth = match convert::given(depth) {
             Some(d) => Some(convert::real(d, "depth")?),
             None => None,
         };
+        let pressure = Pressure::parse(pressure)?;
         AiryWaves::new(parsed, depth)
             .map(|inner| PyWaves {
                 inner,
                 origin: None,
+                pressure,
             })
             .map_err(|e| to_py(e, Some("depth")))
     }
@@ -333,6 +376,9 @@ impl PyWaves {
     ///     The water the waves are for: the wavelengths follow from its gravity, the spreading
     ///     turns about its up normal (default ``Water()``: 9.81 m/s², y up). Giving the waves to
     ///     a :class:`Water` of another gravity or normal is a ``ValueError``.
+    /// pressure : str
+    ///     ``"hydrostatic"`` (default) or ``"froude_krylov"``: the pressure
+    ///     :meth:`Mesh.buoyancy` integrates under the waves (see :class:`Waves`).
     ///
     /// Examples
     /// --------
@@ -344,10 +390,12 @@ impl PyWaves {
     /// 2.0
     /// >>> z_up = buoyancy.Water(normal=(0, 0, 1))
     /// >>> ocean = buoyancy.Water(normal=(0, 0, 1), waves=buoyancy.Waves.jonswap(2.0, 8.0, water=z_up))
+    /// >>> buoyancy.Waves.jonswap(2.0, 8.0, n=16, pressure="froude_krylov").pressure
+    /// 'froude_krylov'
     #[classmethod]
     #[pyo3(
-        signature = (hs, tp, gamma=None, direction=None, spreading=None, n=None, seed=None, depth=None, water=None),
-        text_signature = "(hs, tp, gamma=3.3, direction=(1.0, 0.0, 0.0), spreading=None, n=64, seed=0, depth=None, water=None)"
+        signature = (hs, tp, gamma=None, direction=None, spreading=None, n=None, seed=None, depth=None, water=None, pressure=None),
+        text_signature = "(hs, tp, gamma=3.3, direction=(1.0, 0.0, 0.0), spreading=None, n=64, seed=0, depth=None, water=None, pressure='hydrostatic')"
     )]
     #[allow(clippy::too_many_arguments)]
     fn jonswap(
@@ -361,6 +409,7 @@ impl PyWaves {
         seed: Option<&Bound<'_, PyAny>>,
         depth: Option<&Bound<'_, PyAny>>,
         water: Option<&Bound<'_, PyAny>>,
+        pressure: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let args = SeaArguments {
             hs,
@@ -373,7 +422,7 @@ impl PyWaves {
             depth,
             water,
         };
-        PyWaves::drawn(cls.py(), args)
+        PyWaves::drawn(cls.py(), args, pressure)
     }
 
     /// Irregular waves from a Pierson–Moskowitz spectrum (a fully developed sea),
@@ -385,8 +434,8 @@ impl PyWaves {
     /// (32, None)
     #[classmethod]
     #[pyo3(
-        signature = (hs, tp, direction=None, spreading=None, n=None, seed=None, depth=None, water=None),
-        text_signature = "(hs, tp, direction=(1.0, 0.0, 0.0), spreading=None, n=64, seed=0, depth=None, water=None)"
+        signature = (hs, tp, direction=None, spreading=None, n=None, seed=None, depth=None, water=None, pressure=None),
+        text_signature = "(hs, tp, direction=(1.0, 0.0, 0.0), spreading=None, n=64, seed=0, depth=None, water=None, pressure='hydrostatic')"
     )]
     #[allow(clippy::too_many_arguments)]
     fn pierson_moskowitz(
@@ -399,6 +448,7 @@ impl PyWaves {
         seed: Option<&Bound<'_, PyAny>>,
         depth: Option<&Bound<'_, PyAny>>,
         water: Option<&Bound<'_, PyAny>>,
+        pressure: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let args = SeaArguments {
             hs,
@@ -411,7 +461,7 @@ impl PyWaves {
             depth,
             water,
         };
-        PyWaves::drawn(cls.py(), args)
+        PyWaves::drawn(cls.py(), args, pressure)
     }
 
     /// The components, a tuple of :class:`AiryWave`.
@@ -430,6 +480,13 @@ impl PyWaves {
     #[getter]
     fn depth(&self) -> Option<f64> {
         self.inner.depth()
+    }
+
+    /// The pressure :meth:`Mesh.buoyancy` integrates under these waves: ``"hydrostatic"`` or
+    /// ``"froude_krylov"``.
+    #[getter]
+    fn pressure(&self) -> &'static str {
+        self.pressure.name()
     }
 
     /// The angular frequency ``ω`` of each component under gravity ``gravity`` (m/s²), rad/s,
@@ -462,29 +519,36 @@ impl PyWaves {
     }
 
     fn __repr__(&self) -> String {
+        let pressure = self.pressure.repr_argument();
         if let Some(origin) = &self.origin {
-            return origin.repr();
+            return origin.repr(&pressure);
         }
         let components = self.inner.components();
         let depth = self.inner.depth().map_or_else(|| "None".into(), g);
         if components.len() > REPR_COMPONENTS {
-            return format!("Waves({} components, depth={depth})", components.len());
+            return format!(
+                "Waves({} components, depth={depth}{pressure})",
+                components.len()
+            );
         }
         let listed: Vec<String> = components
             .iter()
             .map(|&inner| PyAiryWave { inner }.__repr__())
             .collect();
-        format!("Waves([{}], depth={depth})", listed.join(", "))
+        format!("Waves([{}], depth={depth}{pressure})", listed.join(", "))
     }
 
-    /// Pickles as its components and depth, or as the sea state they were drawn from.
+    /// Pickles as its components, depth and pressure, or as the sea state they were drawn from
+    /// and the pressure.
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<WavesReduce<'py>> {
         let this = slf.get();
         let cls = slf.get_type();
+        let pressure = this.pressure.name();
         if let Some(origin) = &this.origin {
-            return origin.reduce(&cls);
+            return origin.reduce(&cls, pressure);
         }
-        let args = (this.components(slf.py())?, this.inner.depth()).into_pyobject(slf.py())?;
+        let args =
+            (this.components(slf.py())?, this.inner.depth(), pressure).into_pyobject(slf.py())?;
         Ok((cls.into_any(), args))
     }
 }

@@ -21,6 +21,7 @@ mod gerstner;
 mod height_grid;
 mod io;
 mod mesh;
+mod pressure;
 mod result;
 mod sea_state;
 mod shapes;

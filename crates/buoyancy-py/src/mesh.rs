@@ -344,7 +344,9 @@ impl PyMesh {
     /// -------
     /// Buoyancy
     ///     On waves: the hydrostatic pressure of the waves integrated exactly over the wetted
-    ///     surface (sampled at the vertices, once per vertex); ``volume`` is the volume implied by
+    ///     surface (sampled at the vertices, once per vertex), or, under :class:`Waves` of
+    ///     ``pressure="froude_krylov"``, the linear Froude–Krylov pressure integrated over it by
+    ///     a degree-5 quadrature; ``volume`` is the volume implied by
     ///     the force along the normal, ``force / (density * gravity)``, and ``center`` a point of
     ///     the force's line of action.
     ///

@@ -188,8 +188,9 @@ impl SeaOrigin {
         }
     }
 
-    /// `Waves.jonswap(…)` or `Waves.pierson_moskowitz(…)`, with every argument but the water.
-    pub fn repr(&self) -> String {
+    /// `Waves.jonswap(…)` or `Waves.pierson_moskowitz(…)`, with every argument but the water,
+    /// and `more` (the arguments that follow, each after `", "`) before the closing parenthesis.
+    pub fn repr(&self, more: &str) -> String {
         let s = &self.sea;
         let gamma = match s.spectrum {
             Spectrum::Jonswap { gamma } => format!(", gamma={}", g(gamma)),
@@ -197,7 +198,7 @@ impl SeaOrigin {
         };
         let optional = |x: Option<f64>| x.map_or_else(|| "None".into(), g);
         format!(
-            "Waves.{}(hs={}, tp={}{gamma}, direction=({}, {}, {}), spreading={}, n={}, seed={}, depth={})",
+            "Waves.{}(hs={}, tp={}{gamma}, direction=({}, {}, {}), spreading={}, n={}, seed={}, depth={}{more})",
             self.constructor(),
             g(s.significant_height),
             g(s.peak_period),
@@ -211,11 +212,12 @@ impl SeaOrigin {
         )
     }
 
-    /// What `__reduce__` returns: the classmethod and its arguments, which draw the same
-    /// components again (the draw is deterministic for a seed).
+    /// What `__reduce__` returns: the classmethod and its arguments, the `pressure` last, which
+    /// draw the same components again (the draw is deterministic for a seed).
     pub fn reduce<'py>(
         &self,
         cls: &Bound<'py, PyType>,
+        pressure: &str,
     ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
         let py = cls.py();
         let s = &self.sea;
@@ -232,6 +234,7 @@ impl SeaOrigin {
                 s.seed,
                 self.depth,
                 water,
+                pressure,
             )
                 .into_pyobject(py)?,
             Spectrum::PiersonMoskowitz => (
@@ -243,6 +246,7 @@ impl SeaOrigin {
                 s.seed,
                 self.depth,
                 water,
+                pressure,
             )
                 .into_pyobject(py)?,
         };

@@ -41,7 +41,9 @@ type WaterArgs<'py> = (f64, f64, f64, (f64, f64, f64), Option<Bound<'py, PyAny>>
 /// On waves, :meth:`Mesh.buoyancy` integrates the hydrostatic pressure ``ρ g (η − h)`` (``h``
 /// the height above the still plane) over the wetted surface, which is cut exactly where the
 /// depth, interpolated linearly between the vertices, is zero: the method ``"exact_surface"``
-/// (the default there; the other methods assume a flat surface).
+/// (the default there; the other methods assume a flat surface). Under :class:`Waves` of
+/// ``pressure="froude_krylov"`` it integrates the linear Froude–Krylov pressure instead, whose
+/// wave part decays with depth (see :class:`Waves`).
 ///
 /// Raises ``ValueError`` naming the parameter that is out of range, ``TypeError`` naming the
 /// parameter that is not a number (or not 3 numbers, for ``normal``; or not a surface, for

@@ -13,6 +13,7 @@ use crate::convert;
 use crate::errors::{arg_error, to_py, type_error};
 use crate::gerstner::PyGerstnerWaves;
 use crate::height_grid::PyHeightGrid;
+use crate::pressure::Pressure;
 use crate::surface_function::{FunctionFailure, SurfaceFunction};
 
 /// What the `waves` argument of `Water` accepts, for error messages.
@@ -155,7 +156,8 @@ impl WaterWaves {
     }
 
     /// The buoyancy of `mesh` at `pose` in `water` under these waves at `time` (s): the core's
-    /// `Mesh::buoyancy_in_waves`.
+    /// `Mesh::buoyancy_froude_krylov` for `Waves` of the Froude–Krylov pressure, else its
+    /// `Mesh::buoyancy_in_waves` (the hydrostatic pressure of the waves).
     pub fn buoyancy(
         &self,
         mesh: &Mesh<f64>,
@@ -163,6 +165,13 @@ impl WaterWaves {
         water: &Water<f64>,
         time: f64,
     ) -> Result<Buoyancy<f64>, Failure> {
+        if let Surface::Airy(waves) = &self.surface
+            && waves.pressure == Pressure::FroudeKrylov
+        {
+            return mesh
+                .buoyancy_froude_krylov(pose, water, &waves.inner, time)
+                .map_err(Failure::Core);
+        }
         self.on_surface(water, |surface| {
             mesh.buoyancy_in_waves(pose, water, surface, time)
         })
