@@ -1,6 +1,7 @@
 //! Buoyancy on waves (`Mesh::buoyancy_in_waves`): µs per evaluation on the paper's models under
 //! a calm surface, a 512² periodic height grid, 8 Airy components, a 64-component JONSWAP sea
-//! and 3 Gerstner components, f64, one thread, at the paper's 100 poses (the wave's time
+//! and 3 Gerstner components, and the Froude–Krylov pressure of the 8 Airy components, f64, one
+//! thread, at the paper's 100 poses (the wave's time
 //! advancing 0.05 s per pose). Each figure is the median over 7 batches (see
 //! `common::microseconds`); the last column is Exact Surface under still water, for scale.
 //!
@@ -78,8 +79,8 @@ fn main() {
     for (name, _) in &surfaces {
         print!(" {name} |");
     }
-    println!(" still water, Exact Surface |");
-    println!("|---|{}---|", "---|".repeat(surfaces.len()));
+    println!(" Froude–Krylov, Airy ×8 | still water, Exact Surface |");
+    println!("|---|{}---|---|", "---|".repeat(surfaces.len()));
     for model in common::models::<f64>(large) {
         let poses = common::poses(&model.mesh);
         print!("| {} |", model.name);
@@ -97,6 +98,18 @@ fn main() {
             });
             print!(" {us:.1} |");
         }
+        let us = common::microseconds(poses.len(), || {
+            for (k, pose) in poses.iter().enumerate() {
+                let time = 0.05 * k as f64;
+                black_box(
+                    model
+                        .mesh
+                        .buoyancy_froude_krylov(pose, &water, &airy, time)
+                        .unwrap(),
+                );
+            }
+        });
+        print!(" {us:.1} |");
         let us = common::microseconds(poses.len(), || {
             for pose in &poses {
                 black_box(
