@@ -62,6 +62,9 @@ pub enum Error {
     /// A water surface (see [`waves`](crate::waves)) that is not physical or cannot be
     /// evaluated: a negative amplitude, a grid of the wrong size, a non-finite elevation or time.
     InvalidSurface {
+        /// The parameter at fault, as named in the surface's constructor or query: e.g.
+        /// `amplitude`, `significant_height`, `heights`, `time`.
+        parameter: &'static str,
         /// What is wrong with it.
         reason: &'static str,
     },
@@ -131,7 +134,7 @@ impl fmt::Display for Error {
                 write!(f, "invalid shape parameter {parameter}: {reason}")
             }
             Error::InvalidTransform { reason } => write!(f, "invalid transform: {reason}"),
-            Error::InvalidSurface { reason } => write!(f, "invalid water surface: {reason}"),
+            Error::InvalidSurface { reason, .. } => write!(f, "invalid water surface: {reason}"),
             Error::InvalidVelocity => {
                 write!(f, "invalid velocity: a NaN or infinite component")
             }

@@ -125,6 +125,7 @@ impl<T: Real> Mesh<T> {
         let frame = Frame::new(self, pose, water)?;
         if !time.is_finite() {
             return Err(Error::InvalidSurface {
+                parameter: "time",
                 reason: "the time must be finite (s)",
             });
         }

@@ -80,6 +80,7 @@ impl<T: Real> Mesh<T> {
         let frame = Frame::new(self, pose, water)?;
         if !time.is_finite() {
             return Err(Error::InvalidSurface {
+                parameter: "time",
                 reason: "the time must be finite (s)",
             });
         }
@@ -140,6 +141,7 @@ impl<T: Real> Mesh<T> {
                 let eta = *eta.next().unwrap_or(&T::zero());
                 if !eta.is_finite() {
                     return Err(Error::InvalidSurface {
+                        parameter: "surface",
                         reason: "the surface gave a NaN or infinite elevation",
                     });
                 }

@@ -1,6 +1,7 @@
 //! Linear (Airy) waves: `AiryWave` (one component) and `Waves` (a sum of them over water of a
 //! finite or infinite depth), the core's `AiryComponent` and `AiryWaves`.
 
+use buoyancy_core::Error;
 use buoyancy_core::nalgebra::Vector3;
 use buoyancy_core::waves::{AiryComponent, AiryWaves};
 use numpy::PyArray1;
@@ -90,26 +91,21 @@ impl PyAiryWave {
         direction: Vector3<f64>,
         phase: f64,
     ) -> PyResult<Self> {
-        // The core checks the amplitude and the wavelength: each is checked alone, beside valid
-        // values of the others, so that the error names it.
-        let valid = AiryComponent {
-            amplitude: 0.0,
-            wavelength: 1.0,
+        // The core checks the amplitude, then the wavelength, and names the one at fault; the
+        // direction and the phase are checked below, with messages of their own.
+        let numbers = AiryComponent {
+            amplitude,
+            wavelength,
             direction: Vector3::x(),
             phase: 0.0,
         };
-        for (name, candidate) in [
-            ("amplitude", AiryComponent { amplitude, ..valid }),
-            (
-                "wavelength",
-                AiryComponent {
-                    wavelength,
-                    ..valid
-                },
-            ),
-        ] {
-            AiryWaves::new(vec![candidate], None).map_err(|e| to_py(e, Some(name)))?;
-        }
+        AiryWaves::new(vec![numbers], None).map_err(|e| {
+            let argument = match e {
+                Error::InvalidSurface { parameter, .. } => Some(parameter),
+                _ => None,
+            };
+            to_py(e, argument)
+        })?;
         if direction == Vector3::zeros() {
             return Err(arg_error(
                 "direction",

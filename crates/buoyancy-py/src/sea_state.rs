@@ -1,9 +1,9 @@
 //! Irregular seas from a spectrum (`Waves.jonswap`, `Waves.pierson_moskowitz`): the core's
 //! `SeaState`, drawn into Airy components for the gravity and up normal of a water.
 
-use buoyancy_core::Water;
 use buoyancy_core::nalgebra::Vector3;
 use buoyancy_core::waves::{AiryWaves, SeaState, Spectrum};
+use buoyancy_core::{Error, Water};
 use pyo3::prelude::*;
 use pyo3::types::{PyTuple, PyType};
 
@@ -41,9 +41,8 @@ const DEFAULT_GAMMA: f64 = 3.3;
 const DEFAULT_COMPONENTS: usize = 64;
 
 impl SeaOrigin {
-    /// The components of the sea state `args` describe, and where they come from. Each
-    /// argument is checked by the core alone (beside valid values of the others), so that its
-    /// error names it.
+    /// The components of the sea state `args` describe, and where they come from. The core
+    /// checks the arguments; its error names the one at fault.
     pub fn draw(py: Python<'_>, args: SeaArguments<'_, '_>) -> PyResult<(AiryWaves<f64>, Self)> {
         let spectrum = match args.gamma {
             None => Spectrum::PiersonMoskowitz,
@@ -80,72 +79,21 @@ impl SeaOrigin {
             components: convert::count_or(args.n, "n", DEFAULT_COMPONENTS)?,
             seed,
         };
-        let valid = SeaState {
-            spectrum: Spectrum::PiersonMoskowitz,
-            significant_height: 1.0,
-            peak_period: 1.0,
-            direction: still
-                .normal()
-                .into_inner()
-                .cross(&Vector3::x())
-                .try_normalize(0.5)
-                .unwrap_or_else(Vector3::z),
-            spreading: None,
-            components: 1,
-            seed: 0,
-        };
-        let alone = [
-            (
-                "hs",
-                SeaState {
-                    significant_height: sea.significant_height,
-                    ..valid
-                },
-            ),
-            (
-                "tp",
-                SeaState {
-                    peak_period: sea.peak_period,
-                    ..valid
-                },
-            ),
-            (
-                "gamma",
-                SeaState {
-                    spectrum: sea.spectrum,
-                    ..valid
-                },
-            ),
-            (
-                "spreading",
-                SeaState {
-                    spreading: sea.spreading,
-                    ..valid
-                },
-            ),
-            (
-                "n",
-                SeaState {
-                    components: sea.components.min(1),
-                    ..valid
-                },
-            ),
-            (
-                "direction",
-                SeaState {
-                    direction: sea.direction,
-                    ..valid
-                },
-            ),
-        ];
-        for (name, candidate) in alone {
-            AiryWaves::from_sea_state(&candidate, &still, None)
-                .map_err(|e| to_py(e, Some(name)))?;
-        }
-        AiryWaves::from_sea_state(&valid, &still, depth).map_err(|e| to_py(e, Some("depth")))?;
         let waves = py
             .detach(|| AiryWaves::from_sea_state(&sea, &still, depth))
-            .map_err(|e| to_py(e, None))?;
+            .map_err(|e| {
+                // The core names its parameter; the error names the argument it came from.
+                let argument = match e {
+                    Error::InvalidSurface { parameter, .. } => Some(match parameter {
+                        "significant_height" => "hs",
+                        "peak_period" => "tp",
+                        "components" => "n",
+                        other => other,
+                    }),
+                    _ => None,
+                };
+                to_py(e, argument)
+            })?;
         Ok((
             waves,
             SeaOrigin {

@@ -90,6 +90,7 @@ impl WaterSurface<f64> for SurfaceFunction<'_> {
         Python::attach(|py| self.call(py, points, time, elevations)).map_err(|failure| {
             *self.failure.lock().unwrap_or_else(|p| p.into_inner()) = Some(failure);
             Error::InvalidSurface {
+                parameter: "surface",
                 reason: "the Python surface function failed",
             }
         })

@@ -69,24 +69,33 @@ impl<T: Real> AiryWaves<T> {
         for c in &components {
             if !(c.amplitude.is_finite() && c.amplitude >= T::zero()) {
                 return Err(Error::InvalidSurface {
+                    parameter: "amplitude",
                     reason: "a wave amplitude must be finite and non-negative (m)",
                 });
             }
             if !(c.wavelength.is_finite() && c.wavelength > T::zero()) {
                 return Err(Error::InvalidSurface {
+                    parameter: "wavelength",
                     reason: "a wavelength must be finite and positive (m)",
                 });
             }
-            if !(c.direction.iter().all(|x| x.is_finite()) && c.phase.is_finite()) {
-                return Err(Error::InvalidSurface {
-                    reason: "a wave direction and phase must be finite",
-                });
+            for (finite, parameter) in [
+                (c.direction.iter().all(|x| x.is_finite()), "direction"),
+                (c.phase.is_finite(), "phase"),
+            ] {
+                if !finite {
+                    return Err(Error::InvalidSurface {
+                        parameter,
+                        reason: "a wave direction and phase must be finite",
+                    });
+                }
             }
         }
         if let Some(h) = depth
             && !(h.is_finite() && h > T::zero())
         {
             return Err(Error::InvalidSurface {
+                parameter: "depth",
                 reason: "the depth must be finite and positive (m), or None for deep water",
             });
         }

@@ -54,6 +54,7 @@ impl<T: Real> GerstnerWaves<T> {
             .fold(T::zero(), |s, c| s + c.wavenumber() * c.amplitude);
         if steepness >= T::one() {
             return Err(Error::InvalidSurface {
+                parameter: "components",
                 reason: "a Gerstner sea with steepness Σ k·a of 1 or more folds over: lower the amplitudes",
             });
         }
@@ -148,6 +149,7 @@ impl<T: Real> WaterSurface<T> for GerstnerWaves<T> {
             }
             if !converged {
                 return Err(Error::InvalidSurface {
+                    parameter: "time",
                     reason: "the Gerstner particle at a point did not converge (the time or position is too large for the scalar type)",
                 });
             }

@@ -62,12 +62,14 @@ impl<T: Real> HeightGrid<T> {
     ) -> Result<Self, Error> {
         if columns < 2 || rows < 2 {
             return Err(Error::InvalidSurface {
+                parameter: "columns",
                 reason: "a height grid needs at least 2 columns and 2 rows",
             });
         }
         let finite = |v: &Vector3<T>| v.iter().all(|x| x.is_finite());
         if !(finite(&origin.coords) && finite(&column_step) && finite(&row_step)) {
             return Err(Error::InvalidSurface {
+                parameter: "steps",
                 reason: "a height grid's origin and steps must be finite",
             });
         }
@@ -81,6 +83,7 @@ impl<T: Real> HeightGrid<T> {
             .try_inverse()
             .filter(|m| m.iter().all(|x| x.is_finite()))
             .ok_or(Error::InvalidSurface {
+                parameter: "steps",
                 reason: "a height grid's column and row steps must be non-zero and not parallel",
             })?;
         let mut grid = HeightGrid {
@@ -106,11 +109,13 @@ impl<T: Real> HeightGrid<T> {
     pub fn set_heights(&mut self, heights: &[T]) -> Result<(), Error> {
         if heights.len() != self.heights.len() {
             return Err(Error::InvalidSurface {
+                parameter: "heights",
                 reason: "a height grid needs exactly columns × rows heights",
             });
         }
         if !heights.iter().all(|h| h.is_finite()) {
             return Err(Error::InvalidSurface {
+                parameter: "heights",
                 reason: "a height grid's heights must be finite (m)",
             });
         }

@@ -111,6 +111,7 @@ impl<T: Real, F: Fn(&Point3<T>, T) -> T + Sync> WaterSurface<T> for SurfaceFn<F>
             *eta = (self.0)(q, time);
             if !eta.is_finite() {
                 return Err(Error::InvalidSurface {
+                    parameter: "surface",
                     reason: "the surface function returned a NaN or infinite elevation",
                 });
             }
@@ -133,6 +134,7 @@ pub(crate) fn horizontal_direction<T: Real>(
     let norm = horizontal.norm();
     if !(norm.is_finite() && norm > T::default_epsilon().sqrt() * direction.norm()) {
         return Err(Error::InvalidSurface {
+            parameter: "direction",
             reason: "a wave direction must be finite and not along the water's up normal",
         });
     }

@@ -129,32 +129,47 @@ impl<T: Real> AiryWaves<T> {
         water: &Water<T>,
         depth: Option<T>,
     ) -> Result<Self, Error> {
-        let invalid = |reason| Err(Error::InvalidSurface { reason });
+        let invalid = |parameter, reason| Err(Error::InvalidSurface { parameter, reason });
         if !(sea.significant_height.is_finite() && sea.significant_height >= T::zero()) {
-            return invalid("the significant height must be finite and non-negative (m)");
+            return invalid(
+                "significant_height",
+                "the significant height must be finite and non-negative (m)",
+            );
         }
         if !(sea.peak_period.is_finite() && sea.peak_period > T::zero()) {
-            return invalid("the peak period must be finite and positive (s)");
+            return invalid(
+                "peak_period",
+                "the peak period must be finite and positive (s)",
+            );
         }
         if let Spectrum::Jonswap { gamma } = sea.spectrum
             && !(gamma.is_finite() && gamma >= T::one())
         {
-            return invalid("JONSWAP's peak enhancement γ must be finite and at least 1");
+            return invalid(
+                "gamma",
+                "JONSWAP's peak enhancement γ must be finite and at least 1",
+            );
         }
         if let Some(s) = sea.spreading
             && !(s.is_finite() && s > T::zero())
         {
-            return invalid("the spreading exponent must be finite and positive");
+            return invalid(
+                "spreading",
+                "the spreading exponent must be finite and positive",
+            );
         }
         if sea.components == 0 {
-            return invalid("a sea state needs at least one component");
+            return invalid("components", "a sea state needs at least one component");
         }
+        let mean = horizontal_direction(water, &sea.direction)?;
         if let Some(h) = depth
             && !(h.is_finite() && h > T::zero())
         {
-            return invalid("the depth must be finite and positive (m), or None for deep water");
+            return invalid(
+                "depth",
+                "the depth must be finite and positive (m), or None for deep water",
+            );
         }
-        let mean = horizontal_direction(water, &sea.direction)?;
         let up = water.normal();
         let f = T::from_f64_lossy;
         let peak = T::two_pi() / sea.peak_period;
@@ -205,6 +220,7 @@ fn spread_angle(s: f64, random: &mut SplitMix64) -> Result<f64, Error> {
         }
     }
     Err(Error::InvalidSurface {
+        parameter: "spreading",
         reason: "the spreading exponent is too large to sample; use None for long-crested waves",
     })
 }
