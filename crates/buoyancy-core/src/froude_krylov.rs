@@ -24,7 +24,7 @@ use crate::buoyancy::TriangleCounts;
 use crate::clip::{TriangleClass, classify, clip_below};
 use crate::frame::Frame;
 use crate::wave_pressure::on_line_of_action;
-use crate::waves::{AiryWaves, horizontal_direction, pressure_ratio};
+use crate::waves::{AiryWaves, ResolvedWave, pressure_ratio, resolve};
 use crate::{Buoyancy, Error, Mesh, Pose, Real, Water};
 
 /// Dunavant's degree-5 rule on a triangle: barycentric coordinates `(α, β, β)` (and their
@@ -43,43 +43,22 @@ const RULE: [(f64, f64, f64); 3] = [
     ),
 ];
 
-/// One evaluation's sea, resolved in the world frame: per component its wave vector, angular
-/// frequency, amplitude and phase at the given time.
+/// One evaluation's sea: its components resolved for the water, and the depth.
 struct Sea<T: Real> {
-    components: alloc::vec::Vec<(Vector3<T>, T, T)>,
+    waves: alloc::vec::Vec<ResolvedWave<T>>,
     depth: Option<T>,
 }
 
 impl<T: Real> Sea<T> {
-    fn new(waves: &AiryWaves<T>, water: &Water<T>, time: T) -> Result<Self, Error> {
-        let components = waves
-            .components()
-            .iter()
-            .enumerate()
-            .map(|(i, c)| {
-                let k = horizontal_direction(water, &c.direction)? * c.wavenumber();
-                let phase = c.phase - waves.angular_frequency(i, water.gravity()) * time;
-                Ok((k, c.amplitude, phase))
-            })
-            .collect::<Result<_, Error>>()?;
-        Ok(Sea {
-            components,
-            depth: waves.depth(),
-        })
-    }
-
-    /// The pressure, in units of `ρ·g`, at the world point `x` of height `z` above the still
-    /// plane and horizontal position `q` (see the module documentation).
-    fn pressure(&self, q: &Point3<T>, z: T) -> T {
+    /// The pressure, in units of `ρ·g`, at a point of height `z` above the still plane and
+    /// horizontal position `q` at `time` (see the module documentation).
+    fn pressure(&self, q: &Point3<T>, z: T, time: T) -> T {
         let below = z.min(T::zero());
-        let wave = self
-            .components
-            .iter()
-            .fold(T::zero(), |sum, (k, amplitude, phase)| {
-                sum + *amplitude
-                    * pressure_ratio(k.norm(), below, self.depth)
-                    * (k.dot(&q.coords) + *phase).cos()
-            });
+        let wave = self.waves.iter().fold(T::zero(), |sum, w| {
+            sum + w.amplitude
+                * pressure_ratio(w.wavenumber, below, self.depth)
+                * w.phase_at(&q.coords, time).cos()
+        });
         (wave - z).max(T::zero())
     }
 }
@@ -130,12 +109,15 @@ impl<T: Real> Mesh<T> {
             });
         }
         let heights = self.heights_below_waves(&frame, water, waves, time)?;
-        let sea = Sea::new(waves, water, time)?;
+        let sea = Sea {
+            waves: resolve(waves.components(), water, waves.depth())?,
+            depth: waves.depth(),
+        };
         // Pressure at a point relative to the centroid, mesh frame, in units of ρg.
         let pressure = |r: &Vector3<T>| {
             let z = frame.normal_local.dot(r) + frame.height;
             let x = frame.center_of_mass + frame.rotation * r;
-            sea.pressure(&(x - frame.normal * z), z)
+            sea.pressure(&(x - frame.normal * z), z, time)
         };
         let (mut force, mut torque) = (Vector3::zeros(), Vector3::zeros());
         let mut piece = |q: [Vector3<T>; 3]| {

@@ -4,7 +4,7 @@ use alloc::vec::Vec;
 
 use nalgebra::{Point3, Vector3};
 
-use super::{WaterSurface, horizontal_direction};
+use super::{WaterSurface, amplitude_sum, angular_frequency, resolve};
 use crate::{Error, Real, Water};
 
 /// One linear wave component: `η = a·cos(k·q − ω·t + φ)`, with `k = 2π/λ` along `direction`
@@ -115,12 +115,7 @@ impl<T: Real> AiryWaves<T> {
     /// The angular frequency `ω` of component `index` under gravity `g` (m/s²), rad/s, from
     /// `ω² = g·k·tanh(k·h)` (`g·k` in deep water).
     pub fn angular_frequency(&self, index: usize, gravity: T) -> T {
-        let k = self.components[index].wavenumber();
-        let depth_factor = match self.depth {
-            Some(h) => (k * h).tanh(),
-            None => T::one(),
-        };
-        (gravity * k * depth_factor).sqrt()
+        angular_frequency(self.components[index].wavenumber(), gravity, self.depth)
     }
 }
 
@@ -180,18 +175,14 @@ impl<T: Real> AiryWaves<T> {
             velocity: Vector3::zeros(),
             acceleration: Vector3::zeros(),
         };
-        for (index, c) in self.components.iter().enumerate() {
-            let direction = horizontal_direction(water, &c.direction)?;
-            let k = c.wavenumber();
-            let omega = self.angular_frequency(index, water.gravity());
-            let (cosh_ratio, sinh_ratio) = depth_ratios(k, height, self.depth);
-            let theta = (direction * k).dot(&q.coords) - omega * time + c.phase;
-            let (sin, cos) = theta.sin_cos();
-            let speed = c.amplitude * omega;
+        for w in resolve(&self.components, water, self.depth)? {
+            let (cosh_ratio, sinh_ratio) = depth_ratios(w.wavenumber, height, self.depth);
+            let (sin, cos) = w.phase_at(&q.coords, time).sin_cos();
+            let speed = w.amplitude * w.omega;
             motion.velocity +=
-                direction * (speed * cosh_ratio * cos) + n * (speed * sinh_ratio * sin);
-            motion.acceleration += direction * (speed * omega * cosh_ratio * sin)
-                - n * (speed * omega * sinh_ratio * cos);
+                w.direction * (speed * cosh_ratio * cos) + n * (speed * sinh_ratio * sin);
+            motion.acceleration += w.direction * (speed * w.omega * cosh_ratio * sin)
+                - n * (speed * w.omega * sinh_ratio * cos);
         }
         Ok(motion)
     }
@@ -240,11 +231,9 @@ impl<T: Real> WaterSurface<T> for AiryWaves<T> {
         elevations: &mut [T],
     ) -> Result<(), Error> {
         elevations.fill(T::zero());
-        for (index, c) in self.components.iter().enumerate() {
-            let k = horizontal_direction(water, &c.direction)? * c.wavenumber();
-            let phase = c.phase - self.angular_frequency(index, water.gravity()) * time;
+        for w in resolve(&self.components, water, self.depth)? {
             for (eta, q) in elevations.iter_mut().zip(points) {
-                *eta += c.amplitude * (k.dot(&q.coords) + phase).cos();
+                *eta += w.amplitude * w.phase_at(&q.coords, time).cos();
             }
         }
         Ok(())
@@ -252,11 +241,7 @@ impl<T: Real> WaterSurface<T> for AiryWaves<T> {
 
     /// `Σ aᵢ`.
     fn elevation_bound(&self) -> Option<T> {
-        Some(
-            self.components
-                .iter()
-                .fold(T::zero(), |s, c| s + c.amplitude),
-        )
+        Some(amplitude_sum(&self.components))
     }
 }
 

@@ -2,9 +2,9 @@
 
 use alloc::vec::Vec;
 
-use nalgebra::{Matrix3, Point3, Vector3};
+use nalgebra::{Matrix3, Point3};
 
-use super::{AiryComponent, WaterSurface, horizontal_direction};
+use super::{AiryComponent, WaterSurface, amplitude_sum, resolve};
 use crate::{Error, Real, Water};
 
 /// Trochoidal (Gerstner) waves in deep water: the particle at rest at horizontal position `p`
@@ -77,41 +77,15 @@ impl<T: Real> GerstnerWaves<T> {
         rest: &Point3<T>,
         time: T,
     ) -> Result<(Point3<T>, T), Error> {
-        let waves = self.resolved(water)?;
+        let waves = resolve(&self.components, water, None)?;
         let (mut position, mut eta) = (*rest, T::zero());
         for w in &waves {
-            let theta = w.k.dot(&rest.coords) + w.phase - w.omega * time;
+            let theta = w.phase_at(&rest.coords, time);
             position -= w.direction * (w.amplitude * theta.sin());
             eta += w.amplitude * theta.cos();
         }
         Ok((position, eta))
     }
-
-    fn resolved(&self, water: &Water<T>) -> Result<Vec<Resolved<T>>, Error> {
-        self.components
-            .iter()
-            .map(|c| {
-                let direction = horizontal_direction(water, &c.direction)?;
-                let k = c.wavenumber();
-                Ok(Resolved {
-                    direction,
-                    k: direction * k,
-                    amplitude: c.amplitude,
-                    phase: c.phase,
-                    omega: (water.gravity() * k).sqrt(),
-                })
-            })
-            .collect()
-    }
-}
-
-/// A component with its direction in the still plane, wave vector and angular frequency.
-struct Resolved<T: Real> {
-    direction: Vector3<T>,
-    k: Vector3<T>,
-    amplitude: T,
-    phase: T,
-    omega: T,
 }
 
 impl<T: Real> WaterSurface<T> for GerstnerWaves<T> {
@@ -122,8 +96,8 @@ impl<T: Real> WaterSurface<T> for GerstnerWaves<T> {
         time: T,
         elevations: &mut [T],
     ) -> Result<(), Error> {
-        let waves = self.resolved(water)?;
-        let total = waves.iter().fold(T::zero(), |s, w| s + w.amplitude);
+        let waves = resolve(&self.components, water, None)?;
+        let total = amplitude_sum(&self.components);
         let tolerance = T::from_f64_lossy(1e-12) * total;
         for (eta, q) in elevations.iter_mut().zip(points) {
             // Newton on r(p) = p − Σ dᵢaᵢ sin θᵢ − q, Jacobian I − Σ aᵢ cos θᵢ dᵢ kᵢᵀ.
@@ -133,7 +107,7 @@ impl<T: Real> WaterSurface<T> for GerstnerWaves<T> {
                 let mut residual = p - q.coords;
                 let mut jacobian = Matrix3::identity();
                 for w in &waves {
-                    let theta = w.k.dot(&p) + w.phase - w.omega * time;
+                    let theta = w.phase_at(&p, time);
                     let (sin, cos) = theta.sin_cos();
                     residual -= w.direction * (w.amplitude * sin);
                     jacobian -= w.direction * w.k.transpose() * (w.amplitude * cos);
@@ -154,7 +128,7 @@ impl<T: Real> WaterSurface<T> for GerstnerWaves<T> {
                 });
             }
             *eta = waves.iter().fold(T::zero(), |e, w| {
-                e + w.amplitude * (w.k.dot(&p) + w.phase - w.omega * time).cos()
+                e + w.amplitude * w.phase_at(&p, time).cos()
             });
         }
         Ok(())
@@ -162,11 +136,7 @@ impl<T: Real> WaterSurface<T> for GerstnerWaves<T> {
 
     /// `Σ aᵢ`.
     fn elevation_bound(&self) -> Option<T> {
-        Some(
-            self.components
-                .iter()
-                .fold(T::zero(), |s, c| s + c.amplitude),
-        )
+        Some(amplitude_sum(&self.components))
     }
 }
 
@@ -174,6 +144,7 @@ impl<T: Real> WaterSurface<T> for GerstnerWaves<T> {
 mod tests {
     use super::*;
     use alloc::vec;
+    use nalgebra::Vector3;
 
     fn sea() -> GerstnerWaves<f64> {
         GerstnerWaves::new(vec![

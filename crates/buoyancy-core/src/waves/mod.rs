@@ -26,6 +26,8 @@ mod gerstner;
 mod grid;
 mod spectrum;
 
+use alloc::vec::Vec;
+
 use nalgebra::{Point3, Vector3};
 
 pub(crate) use airy::pressure_ratio;
@@ -139,4 +141,65 @@ pub(crate) fn horizontal_direction<T: Real>(
         });
     }
     Ok(horizontal / norm)
+}
+
+/// A wave component resolved for one water: its unit direction in the still plane, its wave
+/// vector and its angular frequency by the dispersion relation.
+pub(crate) struct ResolvedWave<T: Real> {
+    pub direction: Vector3<T>,
+    /// `k·direction`.
+    pub k: Vector3<T>,
+    /// `k = 2π/λ`.
+    pub wavenumber: T,
+    pub omega: T,
+    pub amplitude: T,
+    pub phase: T,
+}
+
+impl<T: Real> ResolvedWave<T> {
+    /// `θ = k·p − ω·t + φ` at the horizontal position (or particle rest position) `p`.
+    #[inline(always)]
+    pub fn phase_at(&self, p: &Vector3<T>, time: T) -> T {
+        self.k.dot(p) - self.omega * time + self.phase
+    }
+}
+
+/// `components` resolved for `water` over water of `depth` (`None`: deep).
+///
+/// # Errors
+/// [`Error::InvalidSurface`] if a direction is along the water's up normal.
+pub(crate) fn resolve<T: Real>(
+    components: &[AiryComponent<T>],
+    water: &Water<T>,
+    depth: Option<T>,
+) -> Result<Vec<ResolvedWave<T>>, Error> {
+    components
+        .iter()
+        .map(|c| {
+            let direction = horizontal_direction(water, &c.direction)?;
+            let wavenumber = c.wavenumber();
+            Ok(ResolvedWave {
+                direction,
+                k: direction * wavenumber,
+                wavenumber,
+                omega: angular_frequency(wavenumber, water.gravity(), depth),
+                amplitude: c.amplitude,
+                phase: c.phase,
+            })
+        })
+        .collect()
+}
+
+/// The dispersion relation: `ω = √(g·k·tanh(k·h))`, `√(g·k)` in deep water (`depth` `None`).
+pub(crate) fn angular_frequency<T: Real>(wavenumber: T, gravity: T, depth: Option<T>) -> T {
+    let depth_factor = match depth {
+        Some(h) => (wavenumber * h).tanh(),
+        None => T::one(),
+    };
+    (gravity * wavenumber * depth_factor).sqrt()
+}
+
+/// `Σ aᵢ`: a bound on `|η|` for a sum of components.
+pub(crate) fn amplitude_sum<T: Real>(components: &[AiryComponent<T>]) -> T {
+    components.iter().fold(T::zero(), |s, c| s + c.amplitude)
 }
