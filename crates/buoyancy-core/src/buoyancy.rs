@@ -4,7 +4,7 @@ use nalgebra::{Point3, Vector3};
 
 #[cfg(doc)]
 use crate::Method;
-use crate::Real;
+use crate::{Error, Real};
 
 /// The buoyancy of a body: force, its point of application and its torque, world frame, SI units.
 ///
@@ -58,7 +58,16 @@ impl<T: Real> Buoyancy<T> {
         self
     }
 
-    pub(crate) fn is_finite(&self) -> bool {
+    /// This result, or [`Error::NonFiniteResult`] if any of its numbers overflowed.
+    pub(crate) fn checked(self) -> Result<Self, Error> {
+        if self.is_finite() {
+            Ok(self)
+        } else {
+            Err(Error::NonFiniteResult)
+        }
+    }
+
+    fn is_finite(&self) -> bool {
         self.submerged_volume.is_finite()
             && self.center_of_buoyancy.iter().all(|c| c.is_finite())
             && self.force.iter().all(|c| c.is_finite())

@@ -22,7 +22,6 @@ use nalgebra::{Point3, Vector3};
 
 use crate::buoyancy::TriangleCounts;
 use crate::clip::{TriangleClass, classify, clip_below};
-use crate::frame::Frame;
 use crate::wave_pressure::on_line_of_action;
 use crate::waves::{AiryWaves, ResolvedWave, pressure_ratio, resolve};
 use crate::{Buoyancy, Error, Mesh, Pose, Real, Water};
@@ -101,14 +100,7 @@ impl<T: Real> Mesh<T> {
         waves: &AiryWaves<T>,
         time: T,
     ) -> Result<Buoyancy<T>, Error> {
-        let frame = Frame::new(self, pose, water)?;
-        if !time.is_finite() {
-            return Err(Error::InvalidSurface {
-                parameter: "time",
-                reason: "the time must be finite (s)",
-            });
-        }
-        let heights = self.heights_below_waves(&frame, water, waves, time)?;
+        let (frame, heights) = self.under_waves(pose, water, waves, time)?;
         let sea = Sea {
             waves: resolve(waves.components(), water, waves.depth())?,
             depth: waves.depth(),
@@ -178,10 +170,6 @@ impl<T: Real> Mesh<T> {
             frame.surface_point()
         };
         let result = self.finish(&frame, counts, volume, center, world_force, world_torque);
-        if result.is_finite() {
-            Ok(result)
-        } else {
-            Err(Error::NonFiniteResult)
-        }
+        result.checked()
     }
 }

@@ -105,11 +105,7 @@ impl<T: Real> Mesh<T> {
                 self.surface(&frame, water, method, hierarchy, parallel)
             }
         };
-        if result.is_finite() {
-            Ok(result)
-        } else {
-            Err(Error::NonFiniteResult)
-        }
+        result.checked()
     }
 
     /// The corners of triangle `i` (in leaf order), relative to the centroid, mesh frame.

@@ -77,14 +77,7 @@ impl<T: Real> Mesh<T> {
         surface: &dyn WaterSurface<T>,
         time: T,
     ) -> Result<Buoyancy<T>, Error> {
-        let frame = Frame::new(self, pose, water)?;
-        if !time.is_finite() {
-            return Err(Error::InvalidSurface {
-                parameter: "time",
-                reason: "the time must be finite (s)",
-            });
-        }
-        let heights = self.heights_below_waves(&frame, water, surface, time)?;
+        let (frame, heights) = self.under_waves(pose, water, surface, time)?;
         let n = frame.normal_local;
         let triangle = |s: &mut SurfaceSums<T>, i: usize| {
             let [a, b, c] = self.leaf_triangles[i];
@@ -97,18 +90,36 @@ impl<T: Real> Mesh<T> {
         };
         let sums = reduce(self.triangles.len(), false, &triangle);
         let result = self.wave_result(&frame, water, sums);
-        if result.is_finite() {
-            Ok(result)
-        } else {
-            Err(Error::NonFiniteResult)
+        result.checked()
+    }
+
+    /// The frame of the evaluation and the heights of the vertices above the free surface.
+    ///
+    /// # Errors
+    /// As [`Mesh::buoyancy_in_waves`].
+    pub(crate) fn under_waves(
+        &self,
+        pose: &Pose<T>,
+        water: &Water<T>,
+        surface: &dyn WaterSurface<T>,
+        time: T,
+    ) -> Result<(Frame<T>, Vec<T>), Error> {
+        let frame = Frame::new(self, pose, water)?;
+        if !time.is_finite() {
+            return Err(Error::InvalidSurface {
+                parameter: "time",
+                reason: "the time must be finite (s)",
+            });
         }
+        let heights = self.heights_below_waves(&frame, water, surface, time)?;
+        Ok((frame, heights))
     }
 
     /// The height of every stored vertex above the free surface, `n·x − level − η(q, time)`.
     /// With a bound `b` on `|η|`, a vertex higher than `b` plus the longest edge above the
     /// still plane belongs to dry triangles only: it gets `n·x − level − b > 0` and the surface
     /// is not evaluated there.
-    pub(crate) fn heights_below_waves(
+    fn heights_below_waves(
         &self,
         frame: &Frame<T>,
         water: &Water<T>,
