@@ -319,7 +319,6 @@ impl<T: Real> Mesh<T> {
                 }
                 // An edge lying in the surface bounds the cap too, unless the neighbour across
                 // it is submerged and cancels it.
-                let exact = &mut sums.exact;
                 if h[0] == zero || h[1] == zero || h[2] == zero {
                     for k in 0..3 {
                         let j = (k + 1) % 3;

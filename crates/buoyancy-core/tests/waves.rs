@@ -112,16 +112,7 @@ fn a_plane_surface_gives_the_divergence_theorem() {
 fn a_wall_sided_box_in_a_regular_wave() {
     let (length, beam, draft, amplitude, wavelength) = (4.0, 1.0, 0.5, 0.1, 10.0);
     let water = Water::default();
-    let waves = AiryWaves::new(
-        vec![AiryComponent {
-            amplitude,
-            wavelength,
-            direction: Vector3::x(),
-            phase: 0.3,
-        }],
-        None,
-    )
-    .unwrap();
+    let waves = wave_along_x(amplitude, wavelength, 0.3, None);
     let k = 2.0 * std::f64::consts::PI / wavelength;
     let omega = waves.angular_frequency(0, water.gravity());
     let weight = water.specific_weight();
@@ -250,7 +241,13 @@ fn skipping_the_dry_vertices_changes_nothing() {
     }
 }
 
+/// One Airy component along x, over water 30 m deep.
 fn one_wave(amplitude: f64, wavelength: f64, phase: f64) -> AiryWaves<f64> {
+    wave_along_x(amplitude, wavelength, phase, Some(30.0))
+}
+
+/// One Airy component along x, over water of `depth` (`None`: deep).
+fn wave_along_x(amplitude: f64, wavelength: f64, phase: f64, depth: Option<f64>) -> AiryWaves<f64> {
     AiryWaves::new(
         vec![AiryComponent {
             amplitude,
@@ -258,7 +255,7 @@ fn one_wave(amplitude: f64, wavelength: f64, phase: f64) -> AiryWaves<f64> {
             direction: Vector3::x(),
             phase,
         }],
-        Some(30.0),
+        depth,
     )
     .unwrap()
 }
@@ -496,16 +493,7 @@ mod froude_krylov {
     fn the_heave_force_decays_with_the_draft() {
         let (length, beam, draft, amplitude, wavelength) = (4.0, 1.0, 0.8, 0.05, 10.0);
         let water = Water::default();
-        let waves = AiryWaves::new(
-            vec![AiryComponent {
-                amplitude,
-                wavelength,
-                direction: Vector3::x(),
-                phase: 0.3,
-            }],
-            None,
-        )
-        .unwrap();
+        let waves = wave_along_x(amplitude, wavelength, 0.3, None);
         let k = 2.0 * std::f64::consts::PI / wavelength;
         let omega = waves.angular_frequency(0, water.gravity());
         let weight = water.specific_weight();
