@@ -2,7 +2,7 @@
 
 use alloc::vec::Vec;
 
-use nalgebra::{Matrix3, Point3};
+use nalgebra::{Matrix3, Point3, Vector3};
 
 use super::{AiryComponent, WaterSurface, amplitude_sum, resolve};
 use crate::{Error, Real, Water};
@@ -16,8 +16,9 @@ use crate::{Error, Real, Water};
 ///
 /// (`dᵢ` the unit direction of component `i`, `kᵢ = kᵢ·dᵢ`). The surface is the set of those
 /// points, so the elevation at a fixed point `q` needs the particle that is there: `p` is
-/// solved from `x(p, t) = q` by Newton's method, to `10⁻¹² · Σ aᵢ` (hence `η` too, its slope
-/// being below 1). The map is one-to-one while the steepness `Σ kᵢ·aᵢ` is below 1; at 1 the
+/// solved from `x(p, t) = q` by a safeguarded Newton's method, to `10⁻¹² · Σ aᵢ` or the
+/// round-off of the position, whichever is larger (hence `η` too, its slope being below 1).
+/// The map is one-to-one while the steepness `Σ kᵢ·aᵢ` is below 1; at 1 the
 /// crests become cusps and beyond they fold over, which [`GerstnerWaves::new`] rejects.
 ///
 /// ```
@@ -98,28 +99,46 @@ impl<T: Real> WaterSurface<T> for GerstnerWaves<T> {
     ) -> Result<(), Error> {
         let waves = resolve(&self.components, water, None)?;
         let total = amplitude_sum(&self.components);
-        let tolerance = T::from_f64_lossy(1e-12) * total;
+        // The map p ↦ q + Σ dᵢaᵢ sin θᵢ(p) contracts by the steepness L = Σ kᵢaᵢ < 1, so a
+        // residual below 10⁻¹²·Σa·(1 − L) puts p within 10⁻¹²·Σa of the particle.
+        let steepness = waves
+            .iter()
+            .fold(T::zero(), |s, w| s + w.wavenumber * w.amplitude);
+        let tolerance = T::from_f64_lossy(1e-12) * total * (T::one() - steepness);
+        // r(p) = p − Σ dᵢaᵢ sin θᵢ − q and its Jacobian I − Σ aᵢ cos θᵢ dᵢ kᵢᵀ.
+        let residual = |p: &Vector3<T>, q: &Point3<T>| {
+            let mut r = p - q.coords;
+            let mut jacobian = Matrix3::identity();
+            for w in &waves {
+                let (sin, cos) = w.phase_at(p, time).sin_cos();
+                r -= w.direction * (w.amplitude * sin);
+                jacobian -= w.direction * w.k.transpose() * (w.amplitude * cos);
+            }
+            (r, jacobian)
+        };
         for (eta, q) in elevations.iter_mut().zip(points) {
-            // Newton on r(p) = p − Σ dᵢaᵢ sin θᵢ − q, Jacobian I − Σ aᵢ cos θᵢ dᵢ kᵢᵀ.
+            // Newton's method, safeguarded: a Newton step that does not lower the residual is
+            // replaced by a step of the contraction, p − r(p), which lowers it by the factor L.
             let mut p = q.coords;
-            let mut converged = total == T::zero();
-            for _ in 0..100 {
-                let mut residual = p - q.coords;
-                let mut jacobian = Matrix3::identity();
-                for w in &waves {
-                    let theta = w.phase_at(&p, time);
-                    let (sin, cos) = theta.sin_cos();
-                    residual -= w.direction * (w.amplitude * sin);
-                    jacobian -= w.direction * w.k.transpose() * (w.amplitude * cos);
-                }
-                let Some(step) = jacobian.lu().solve(&residual) else {
-                    break;
-                };
-                p -= step;
-                if step.norm() <= tolerance {
+            let (mut r, mut jacobian) = residual(&p, q);
+            // Nor can the residual go below the round-off of the position itself.
+            let floor = T::default_epsilon() * T::from_f64_lossy(8.0) * (q.coords.norm() + total);
+            let tolerance = tolerance.max(floor);
+            let mut converged = false;
+            for _ in 0..10_000 {
+                if r.norm() <= tolerance {
                     converged = true;
                     break;
                 }
+                let newton = jacobian.lu().solve(&r).map(|step| p - step);
+                let next = newton
+                    .map(|candidate| (candidate, residual(&candidate, q)))
+                    .filter(|(_, (next, _))| next.norm() < r.norm())
+                    .unwrap_or_else(|| {
+                        let contracted = p - r;
+                        (contracted, residual(&contracted, q))
+                    });
+                (p, (r, jacobian)) = next;
             }
             if !converged {
                 return Err(Error::InvalidSurface {
