@@ -5,7 +5,8 @@
 //! advancing 0.05 s per pose). Each figure is the median over 7 batches (see
 //! `common::microseconds`); the last column is Exact Surface under still water, for scale.
 //!
-//! `cargo bench --bench waves [-- large]` (`large` adds the 10⁶-triangle torus knot).
+//! `cargo bench --bench waves [-- large] [WORD...]` (`large` adds the 10⁶-triangle torus knot;
+//! other words keep the models and columns whose names contain one of them, e.g. `bunny airy`).
 
 mod common;
 
@@ -16,10 +17,25 @@ use buoyancy::waves::{
     AiryComponent, AiryWaves, CalmSurface, GerstnerWaves, HeightGrid, SeaState, Spectrum,
     WaterSurface,
 };
-use buoyancy::{Method, Traversal};
+use buoyancy::{Mesh, Method, Pose, Traversal};
 
 fn main() {
-    let large = std::env::args().any(|a| a == "large");
+    let args: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| !a.starts_with('-'))
+        .map(|a| a.to_lowercase())
+        .collect();
+    let large = args.iter().any(|a| a == "large");
+    let words: Vec<&String> = args.iter().filter(|a| *a != "large").collect();
+    let kept = |name: &str, all: &[&str]| {
+        let name = name.to_lowercase();
+        // A word that names no entry of this list does not filter it.
+        let here: Vec<&&String> = words
+            .iter()
+            .filter(|w| all.iter().any(|n| n.to_lowercase().contains(w.as_str())))
+            .collect();
+        here.is_empty() || here.iter().any(|w| name.contains(w.as_str()))
+    };
     let water = common::water::<f64>();
     let n = 512;
     // A smooth periodic field over 128 m: two crossing swells, 0.3 m high.
@@ -75,51 +91,59 @@ fn main() {
         ("JONSWAP ×64", &jonswap),
         ("Gerstner ×3", &gerstner),
     ];
+    // One evaluation at a pose and time.
+    type Column<'a> = (String, Box<dyn Fn(&Mesh<f64>, &Pose<f64>, f64) + 'a>);
+    let mut columns: Vec<Column> = surfaces
+        .iter()
+        .map(|&(name, surface)| -> Column {
+            let water = &water;
+            (
+                name.to_string(),
+                Box::new(move |mesh, pose, time| {
+                    black_box(mesh.buoyancy_in_waves(pose, water, surface, time).unwrap());
+                }),
+            )
+        })
+        .collect();
+    columns.push((
+        "Froude–Krylov, Airy ×8".into(),
+        Box::new(|mesh, pose, time| {
+            black_box(
+                mesh.buoyancy_froude_krylov(pose, &water, &airy, time)
+                    .unwrap(),
+            );
+        }),
+    ));
+    columns.push((
+        "still water, Exact Surface".into(),
+        Box::new(|mesh, pose, _| {
+            black_box(
+                mesh.buoyancy_with(pose, &water, Method::ExactSurface, Traversal::Auto)
+                    .unwrap(),
+            );
+        }),
+    ));
+    let names: Vec<String> = columns.iter().map(|(name, _)| name.clone()).collect();
+    let names: Vec<&str> = names.iter().map(String::as_str).collect();
+    columns.retain(|(name, _)| kept(name, &names));
     print!("| model |");
-    for (name, _) in &surfaces {
+    for (name, _) in &columns {
         print!(" {name} |");
     }
-    println!(" Froude–Krylov, Airy ×8 | still water, Exact Surface |");
-    println!("|---|{}---|---|", "---|".repeat(surfaces.len()));
-    for model in common::models::<f64>(large) {
+    println!("\n|---|{}", "---|".repeat(columns.len()));
+    let models = common::models::<f64>(large);
+    let model_names: Vec<&str> = models.iter().map(|m| m.name.as_str()).collect();
+    for model in models.iter().filter(|m| kept(&m.name, &model_names)) {
         let poses = common::poses(&model.mesh);
         print!("| {} |", model.name);
-        for (_, surface) in &surfaces {
+        for (_, evaluate) in &columns {
             let us = common::microseconds(poses.len(), || {
                 for (k, pose) in poses.iter().enumerate() {
-                    let time = 0.05 * k as f64;
-                    black_box(
-                        model
-                            .mesh
-                            .buoyancy_in_waves(pose, &water, *surface, time)
-                            .unwrap(),
-                    );
+                    evaluate(&model.mesh, pose, 0.05 * k as f64);
                 }
             });
             print!(" {us:.1} |");
         }
-        let us = common::microseconds(poses.len(), || {
-            for (k, pose) in poses.iter().enumerate() {
-                let time = 0.05 * k as f64;
-                black_box(
-                    model
-                        .mesh
-                        .buoyancy_froude_krylov(pose, &water, &airy, time)
-                        .unwrap(),
-                );
-            }
-        });
-        print!(" {us:.1} |");
-        let us = common::microseconds(poses.len(), || {
-            for pose in &poses {
-                black_box(
-                    model
-                        .mesh
-                        .buoyancy_with(pose, &water, Method::ExactSurface, Traversal::Auto)
-                        .unwrap(),
-                );
-            }
-        });
-        println!(" {us:.1} |");
+        println!();
     }
 }

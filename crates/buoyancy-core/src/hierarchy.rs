@@ -94,11 +94,14 @@ enum NodeClass {
     Straddling,
 }
 
-/// One evaluation's water plane in the form the node test wants (see the module documentation).
+/// One evaluation's water plane in the form the node test wants (see the module documentation),
+/// thickened by `reach` on either side: a node is submerged when all of it lies more than
+/// `reach` below the plane, dry when more than `reach` above it.
 struct PlaneTest<T: Real> {
     normal: [T; 3],
     height: T,
     margin: T,
+    reach: T,
     /// Per axis, the index in `Node::bounds` of the box's lower (`near`) and upper (`far`) end
     /// along the normal.
     near: [usize; 3],
@@ -106,7 +109,7 @@ struct PlaneTest<T: Real> {
 }
 
 impl<T: Real> PlaneTest<T> {
-    fn new(hierarchy: &Hierarchy<T>, normal: &Vector3<T>, height: T) -> Self {
+    fn new(hierarchy: &Hierarchy<T>, normal: &Vector3<T>, height: T, reach: T) -> Self {
         let normal = [normal.x, normal.y, normal.z];
         let near: [usize; 3] =
             core::array::from_fn(|k| if normal[k] >= T::zero() { k } else { k + 3 });
@@ -114,6 +117,7 @@ impl<T: Real> PlaneTest<T> {
             normal,
             height,
             margin: hierarchy.height_round_off(height) * T::from_f64_lossy(2.0),
+            reach,
             near,
             far: near.map(|k| (k + 3) % 6),
         }
@@ -128,9 +132,9 @@ impl<T: Real> PlaneTest<T> {
                 + n[2] * T::from_f32_exact(b[corner[2]])
                 + self.height
         };
-        if at(&self.far) + self.margin < T::zero() {
+        if at(&self.far) + self.margin < -self.reach {
             NodeClass::Submerged
-        } else if at(&self.near) - self.margin > T::zero() {
+        } else if at(&self.near) - self.margin > self.reach {
             NodeClass::Dry
         } else {
             NodeClass::Straddling
@@ -192,7 +196,22 @@ impl<T: Real> Hierarchy<T> {
         parallel: bool,
         visit: &(impl Fn(&mut S, Visit) + Sync),
     ) -> S {
-        let plane = PlaneTest::new(self, normal, height);
+        self.reduce_in_layer(normal, height, T::zero(), parallel, visit)
+    }
+
+    /// [`Hierarchy::reduce`] for a surface anywhere within `reach` of the plane: a node is taken
+    /// as submerged when every point of it lies more than `reach` below the plane (up to the
+    /// same round-off margin), skipped when more than `reach` above it, and opened otherwise.
+    #[inline]
+    pub fn reduce_in_layer<S: Sums>(
+        &self,
+        normal: &Vector3<T>,
+        height: T,
+        reach: T,
+        parallel: bool,
+        visit: &(impl Fn(&mut S, Visit) + Sync),
+    ) -> S {
+        let plane = PlaneTest::new(self, normal, height, reach);
         self.reduce_subtree(&plane, 0, 0, parallel, visit)
     }
 
@@ -238,7 +257,7 @@ impl<T: Real> Hierarchy<T> {
     /// one after the other (depth first, left before right).
     #[inline]
     pub fn walk(&self, normal: &Vector3<T>, height: T, visit: impl FnMut(Visit)) {
-        self.walk_from(&PlaneTest::new(self, normal, height), 0, visit);
+        self.walk_from(&PlaneTest::new(self, normal, height, T::zero()), 0, visit);
     }
 
     /// [`Hierarchy::walk`] of the subtree at `root`.

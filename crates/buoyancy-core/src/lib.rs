@@ -63,6 +63,7 @@ mod surface;
 mod surface_moments;
 mod traversal;
 mod validation;
+mod vertex_terms;
 mod volume;
 mod water;
 pub mod wave_pressure;

@@ -6,6 +6,7 @@ use crate::hierarchy::Hierarchy;
 use crate::node_sums::{NodeSums, TriangleTerms};
 use crate::surface_moments::SurfaceMoments;
 use crate::validation;
+use crate::vertex_terms::VertexTerms;
 use crate::{Error, Real};
 
 /// A closed, consistently oriented triangle mesh, validated and prepared for buoyancy queries.
@@ -85,6 +86,9 @@ pub struct Mesh<T: Real> {
     pub(crate) hierarchy: Hierarchy<T>,
     /// What the hierarchy's nodes add for each method when entirely under water.
     pub(crate) node_sums: NodeSums<T>,
+    /// Per vertex (in `vertices`' order), the coefficients of the pressure integrals linear in
+    /// its height, for the parts under water of a non-flat surface.
+    pub(crate) vertex_terms: Vec<VertexTerms<T>>,
     reoriented: bool,
 }
 
@@ -149,7 +153,9 @@ impl<T: Real> Mesh<T> {
             .flat_map(|t| (0..3).map(move |k| (t[k], t[(k + 1) % 3])))
             .map(|(a, b)| (relative[a as usize] - relative[b as usize]).norm())
             .fold(0.0, f64::max);
+        let vertex_terms = VertexTerms::build(&layout.vertices, &layout.triangles);
         Ok(Mesh {
+            vertex_terms,
             vertices: layout.vertices,
             vertex_slots: layout.vertex_slots,
             leaf_triangles: layout.triangles,
@@ -261,10 +267,12 @@ impl<T: Real> Mesh<T> {
 
     /// Bytes of memory taken by the bounding-volume hierarchy of
     /// [`Traversal::Hierarchy`](crate::Traversal::Hierarchy): its nodes with the volume and
-    /// surface sums, and the triangles' copy in leaf order.
+    /// surface sums, the triangles' copy in leaf order, and the per-vertex terms of the walk
+    /// under waves (see [`Mesh::buoyancy_in_waves`]).
     pub fn hierarchy_bytes(&self) -> usize {
         self.hierarchy.memory()
             + self.node_sums.memory()
+            + self.vertex_terms.len() * core::mem::size_of::<VertexTerms<T>>()
             + self.leaf_triangles.len() * core::mem::size_of::<[u32; 3]>()
     }
 

@@ -15,7 +15,20 @@
 //! ```
 //!
 //! The horizontal forces from the wave slope are part of it. For the calm surface the result is
-//! `ExactSurface`'s, bit for bit with [`Traversal::Scan`](crate::Traversal::Scan).
+//! `ExactSurface`'s.
+//!
+//! # The walk
+//! With `b` a bound on `|η|` ([`WaterSurface::elevation_bound`]), the free surface lies within
+//! `b` of the still plane, and the hierarchy is walked against that layer: a node more than `b`
+//! above the still plane is dry and skipped; a leaf within reach of the layer has its
+//! triangles cut and integrated one by one; a node more than `b` below is under water all
+//! over, and is summed without visiting its triangles' corners. Every sum of a triangle is
+//! linear in its vertex heights but one (see `vertex_terms`): per vertex, twelve coefficients
+//! summed over the triangles around it give the linear part of every triangle around a *deep*
+//! vertex (more than `b` below the still plane) in one multiply-add each, the crossed leaves
+//! take their own triangles' shares back out, and the submerged nodes add the quadratic term
+//! triangle by triangle, three heights each. The surface is evaluated at every vertex that may
+//! be wet: with the pressure `ρg(η − z)` at every depth, every wet vertex's `η` counts.
 //!
 //! The result is a [`Buoyancy`]: `submerged_volume` is the volume implied by the vertical force,
 //! `n·F/(ρ·g)`; `center_of_buoyancy` is a point of the force's line of action (the central axis
@@ -27,10 +40,14 @@ use alloc::vec::Vec;
 use nalgebra::{Point3, Vector3};
 
 use crate::frame::Frame;
+use crate::hierarchy::Visit;
+use crate::reduction::Sums;
+#[cfg(test)]
 use crate::reduction::reduce;
 use crate::surface::SurfaceSums;
+use crate::vertex_terms::LinearSums;
 use crate::waves::WaterSurface;
-use crate::{Buoyancy, Error, Mesh, Pose, Real, Water};
+use crate::{Buoyancy, Error, Mesh, Method, Pose, Real, Water};
 
 impl<T: Real> Mesh<T> {
     /// The buoyancy of this mesh placed by `pose` (mesh → world) in `water` whose free surface
@@ -38,9 +55,14 @@ impl<T: Real> Mesh<T> {
     /// the wetted surface (see the [module documentation](crate::wave_pressure)). The torque is
     /// about the body's center of mass.
     ///
-    /// One evaluation of the surface per vertex that may be wet (see
-    /// [`WaterSurface::elevation_bound`]); every triangle is visited (the hierarchy's stored
-    /// sums assume a flat surface). It allocates three buffers of one number or point per vertex.
+    /// The cost follows what is under water: with `b` the surface's
+    /// [`elevation_bound`](WaterSurface::elevation_bound), the hierarchy skips the nodes more
+    /// than `b` above the still plane, integrates triangle by triangle only the leaves within
+    /// `b` of it, and sums the rest through per-vertex coefficients (see [the
+    /// walk](crate::wave_pressure#the-walk)). The surface is evaluated once per vertex that may
+    /// be wet, in one call for up to 16,384 vertices. A calm surface (`b = 0`) is
+    /// [`Method::ExactSurface`](crate::Method::ExactSurface) on the hierarchy. It allocates a
+    /// number per vertex and a point per vertex that may be wet.
     ///
     /// ```
     /// use buoyancy_core::waves::{AiryComponent, AiryWaves, CalmSurface};
@@ -54,8 +76,8 @@ impl<T: Real> Mesh<T> {
     ///
     /// // Calm water: Exact Surface.
     /// let calm = cube.buoyancy_in_waves(&pose, &water, &CalmSurface, 0.0)?;
-    /// let still = cube.buoyancy_with(&pose, &water, Method::ExactSurface, Traversal::Scan)?;
-    /// assert_eq!(calm.force, still.force);
+    /// let still = cube.buoyancy(&pose, &water, Method::ExactSurface)?;
+    /// assert!((calm.force - still.force).norm() < 1e-9);
     ///
     /// // A long swell whose crest is over the cube: more under water, pushed up harder.
     /// let swell = AiryWaves::new(
@@ -77,6 +99,241 @@ impl<T: Real> Mesh<T> {
         surface: &dyn WaterSurface<T>,
         time: T,
     ) -> Result<Buoyancy<T>, Error> {
+        self.hydrostatic_in_waves(pose, water, surface, time, false)
+    }
+
+    /// [`Mesh::buoyancy_in_waves`] with the work split across rayon's threads, bit-identical to
+    /// it: the vertices in chunks of 16,384 (the surface evaluated chunk by chunk, concurrently),
+    /// the hierarchy as [`Mesh::par_buoyancy`] splits it. Worth it from about 10⁵ triangles.
+    ///
+    /// # Errors
+    /// As [`Mesh::buoyancy_in_waves`].
+    #[cfg(feature = "rayon")]
+    pub fn par_buoyancy_in_waves(
+        &self,
+        pose: &Pose<T>,
+        water: &Water<T>,
+        surface: &dyn WaterSurface<T>,
+        time: T,
+    ) -> Result<Buoyancy<T>, Error> {
+        self.hydrostatic_in_waves(pose, water, surface, time, true)
+    }
+
+    fn hydrostatic_in_waves(
+        &self,
+        pose: &Pose<T>,
+        water: &Water<T>,
+        surface: &dyn WaterSurface<T>,
+        time: T,
+        parallel: bool,
+    ) -> Result<Buoyancy<T>, Error> {
+        let frame = Frame::new(self, pose, water)?;
+        check_time(time)?;
+        let reach = surface_reach(surface);
+        if reach == Some(T::zero()) {
+            return self
+                .surface(&frame, water, Method::ExactSurface, true, parallel)
+                .checked();
+        }
+        let (heights, deep) =
+            self.heights_in_waves(&frame, water, surface, time, reach, parallel)?;
+        let n = frame.normal_local;
+        let infinite = T::from_f64_lossy(f64::INFINITY);
+        let walk = self.hierarchy.reduce_in_layer(
+            &n,
+            frame.height,
+            reach.unwrap_or(infinite),
+            parallel,
+            &|walk: &mut WaveWalk<T>, visit| match visit {
+                Visit::SubmergedNode {
+                    node,
+                    triangle_count,
+                } => {
+                    walk.triangles.counts.full += triangle_count as usize;
+                    for i in self.hierarchy.range(node) {
+                        walk.quadratic += self.quadratic_term(&n, i, &heights);
+                    }
+                }
+                Visit::CrossedLeaf { triangles } => {
+                    for i in triangles {
+                        self.crossed_triangle(walk, &frame, i, &heights, reach);
+                    }
+                }
+            },
+        );
+        let [force6, torque24, moment24] = walk.linear.merge(deep).surface_terms(&n);
+        let mut sums = walk.triangles;
+        sums.force6 += force6;
+        sums.torque24 += torque24;
+        sums.moment24 += moment24 - n * (walk.quadratic * T::from_f64_lossy(0.5));
+        self.wave_result(&frame, water, sums).checked()
+    }
+
+    /// `(n·2A)·(Σhᵢ² + (Σhᵢ)²)` of leaf-order triangle `i`: the term of its `moment24` that is
+    /// quadratic in the heights (see `vertex_terms`).
+    #[inline(always)]
+    fn quadratic_term(&self, n: &Vector3<T>, i: usize, heights: &[T]) -> T {
+        let [a, b, c] = self.leaf_triangles[i];
+        let h = [
+            heights[a as usize],
+            heights[b as usize],
+            heights[c as usize],
+        ];
+        let sum = h[0] + h[1] + h[2];
+        let q = h[0] * h[0] + h[1] * h[1] + h[2] * h[2] + sum * sum;
+        let normal = &self.normals[i];
+        q * n.dot(&normal.unit) * normal.double_area
+    }
+
+    /// Integrates the wetted part of leaf-order triangle `i` of a leaf the layer of the waves
+    /// crosses, and takes its share out of the per-vertex sums of its deep corners (which sum
+    /// every triangle around them).
+    #[inline(always)]
+    fn crossed_triangle(
+        &self,
+        walk: &mut WaveWalk<T>,
+        frame: &Frame<T>,
+        i: usize,
+        heights: &[T],
+        reach: Option<T>,
+    ) {
+        let [a, b, c] = self.leaf_triangles[i];
+        let v = self.corners(i);
+        let h = [
+            heights[a as usize],
+            heights[b as usize],
+            heights[c as usize],
+        ];
+        walk.triangles
+            .add_wetted_part(&frame.normal_local, v, h, true);
+        let Some(reach) = reach else { return };
+        let still = frame.heights(&v);
+        if still.iter().all(|s| *s >= -reach) {
+            return;
+        }
+        let area2 = (v[1] - v[0]).cross(&(v[2] - v[0]));
+        let sum = v[0] + v[1] + v[2];
+        for k in 0..3 {
+            if still[k] < -reach {
+                walk.linear.remove_share(h[k], &v[k], &sum, &area2);
+            }
+        }
+    }
+
+    /// The heights of the vertices above the free surface (see [`Mesh::heights_in_chunk`]),
+    /// and the linear sums of the deep vertices, chunk by chunk (in parallel with `parallel`),
+    /// merged in order.
+    fn heights_in_waves(
+        &self,
+        frame: &Frame<T>,
+        water: &Water<T>,
+        surface: &dyn WaterSurface<T>,
+        time: T,
+        reach: Option<T>,
+        parallel: bool,
+    ) -> Result<(Vec<T>, LinearSums<T>), Error> {
+        let mut heights = alloc::vec![T::zero(); self.vertices.len()];
+        let chunk = |(k, out): (usize, &mut [T])| {
+            self.heights_in_chunk(k * VERTEX_CHUNK, out, frame, water, surface, time, reach)
+        };
+        #[cfg(feature = "rayon")]
+        let chunks: Vec<Result<LinearSums<T>, Error>> = if parallel {
+            use rayon::prelude::*;
+            heights
+                .par_chunks_mut(VERTEX_CHUNK)
+                .enumerate()
+                .map(chunk)
+                .collect()
+        } else {
+            heights
+                .chunks_mut(VERTEX_CHUNK)
+                .enumerate()
+                .map(chunk)
+                .collect()
+        };
+        #[cfg(not(feature = "rayon"))]
+        let chunks: Vec<Result<LinearSums<T>, Error>> = {
+            let _ = parallel;
+            heights
+                .chunks_mut(VERTEX_CHUNK)
+                .enumerate()
+                .map(chunk)
+                .collect()
+        };
+        let mut deep = LinearSums::zero();
+        for sums in chunks {
+            deep = deep.merge(sums?);
+        }
+        Ok((heights, deep))
+    }
+
+    /// For the vertices from `first` on, one per entry of `heights`: their heights
+    /// `n·x − level − η` above the free surface, and the linear sums (see `vertex_terms`) of
+    /// the deep ones, more than `reach` below the still plane, every triangle around which is
+    /// under water. A vertex more than `reach` plus the longest edge above the still plane
+    /// belongs to dry triangles only: it gets `n·x − level − reach > 0` and the surface is not
+    /// evaluated there. With no `reach` every vertex is evaluated and none is deep.
+    #[allow(clippy::too_many_arguments)]
+    fn heights_in_chunk(
+        &self,
+        first: usize,
+        heights: &mut [T],
+        frame: &Frame<T>,
+        water: &Water<T>,
+        surface: &dyn WaterSurface<T>,
+        time: T,
+        reach: Option<T>,
+    ) -> Result<LinearSums<T>, Error> {
+        let n = &frame.normal_local;
+        let vertices = &self.vertices[first..first + heights.len()];
+        let count = heights.len();
+        let (mut points, mut wet, mut deep) = (
+            Vec::with_capacity(count),
+            Vec::with_capacity(count),
+            Vec::with_capacity(count),
+        );
+        for (j, (h, v)) in heights.iter_mut().zip(vertices).enumerate() {
+            let still = n.dot(v) + frame.height;
+            *h = still;
+            match reach {
+                Some(reach) if still > reach + self.longest_edge => *h = still - reach,
+                _ => {
+                    points.push(frame.center_of_mass + frame.rotation * v - frame.normal * still);
+                    wet.push(j as u32);
+                }
+            }
+            if reach.is_some_and(|reach| still < -reach) {
+                deep.push(j as u32);
+            }
+        }
+        let mut elevations = alloc::vec![T::zero(); points.len()];
+        surface.elevations(water, &points, time, &mut elevations)?;
+        for (&j, eta) in wet.iter().zip(&elevations) {
+            if !eta.is_finite() {
+                return Err(Error::InvalidSurface {
+                    parameter: "surface",
+                    reason: "the surface gave a NaN or infinite elevation",
+                });
+            }
+            heights[j as usize] -= *eta;
+        }
+        let mut sums = LinearSums::zero();
+        for &j in &deep {
+            sums.add(heights[j as usize], &self.vertex_terms[first + j as usize]);
+        }
+        Ok(sums)
+    }
+
+    /// [`Mesh::buoyancy_in_waves`] triangle by triangle, every vertex evaluated: the reference
+    /// the walk is tested against.
+    #[cfg(test)]
+    pub(crate) fn buoyancy_in_waves_scan(
+        &self,
+        pose: &Pose<T>,
+        water: &Water<T>,
+        surface: &dyn WaterSurface<T>,
+        time: T,
+    ) -> Result<Buoyancy<T>, Error> {
         let (frame, heights) = self.under_waves(pose, water, surface, time)?;
         let n = frame.normal_local;
         let triangle = |s: &mut SurfaceSums<T>, i: usize| {
@@ -89,8 +346,7 @@ impl<T: Real> Mesh<T> {
             s.add_wetted_part(&n, self.corners(i), h, true);
         };
         let sums = reduce(self.triangles.len(), false, &triangle);
-        let result = self.wave_result(&frame, water, sums);
-        result.checked()
+        self.wave_result(&frame, water, sums).checked()
     }
 
     /// The frame of the evaluation and the heights of the vertices above the free surface.
@@ -105,12 +361,7 @@ impl<T: Real> Mesh<T> {
         time: T,
     ) -> Result<(Frame<T>, Vec<T>), Error> {
         let frame = Frame::new(self, pose, water)?;
-        if !time.is_finite() {
-            return Err(Error::InvalidSurface {
-                parameter: "time",
-                reason: "the time must be finite (s)",
-            });
-        }
+        check_time(time)?;
         let heights = self.heights_below_waves(&frame, water, surface, time)?;
         Ok((frame, heights))
     }
@@ -133,7 +384,7 @@ impl<T: Real> Mesh<T> {
             .iter()
             .map(|v| n.dot(v) + frame.height)
             .collect();
-        let bound = surface.elevation_bound().filter(|b| b.is_finite());
+        let bound = surface_reach(surface);
         let reach = bound.map(|b| b + self.longest_edge);
         let wet = |h: &T| reach.is_none_or(|r| *h <= r);
         // The horizontal positions, world frame, of the vertices that may be wet.
@@ -190,6 +441,60 @@ impl<T: Real> Mesh<T> {
     }
 }
 
+/// Vertices per chunk of the vertex pass of [`Mesh::buoyancy_in_waves`]: the surface is evaluated
+/// once per chunk, and [`Mesh::par_buoyancy_in_waves`] evaluates the chunks concurrently.
+const VERTEX_CHUNK: usize = 16_384;
+
+/// [`Error::InvalidSurface`] for a time that is not finite.
+fn check_time<T: Real>(time: T) -> Result<(), Error> {
+    if time.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::InvalidSurface {
+            parameter: "time",
+            reason: "the time must be finite (s)",
+        })
+    }
+}
+
+/// The surface's bound on `|η|` (when it gives a finite one), widened by `64ε` of itself to
+/// cover the round-off of the surface's own sums: every evaluated elevation lies within it.
+fn surface_reach<T: Real>(surface: &dyn WaterSurface<T>) -> Option<T> {
+    surface
+        .elevation_bound()
+        .filter(|b| b.is_finite() && *b >= T::zero())
+        .map(|b| b + b * T::default_epsilon() * T::from_f64_lossy(64.0))
+}
+
+/// The walk's running sums under waves: the triangles of the crossed leaves integrated one by
+/// one, the linear terms taken back from the deep vertices for them, and the quadratic term of
+/// the triangles of the submerged nodes.
+#[derive(Clone, Copy)]
+struct WaveWalk<T: Real> {
+    triangles: SurfaceSums<T>,
+    linear: LinearSums<T>,
+    /// `Σ (n·2A)·(Σhᵢ² + (Σhᵢ)²)` over the triangles of the submerged nodes.
+    quadratic: T,
+}
+
+impl<T: Real> Sums for WaveWalk<T> {
+    fn zero() -> Self {
+        WaveWalk {
+            triangles: SurfaceSums::zero(),
+            linear: LinearSums::zero(),
+            quadratic: T::zero(),
+        }
+    }
+
+    fn merge(self, other: Self) -> Self {
+        WaveWalk {
+            triangles: self.triangles.merge(other.triangles),
+            linear: self.linear.merge(other.linear),
+            quadratic: self.quadratic + other.quadratic,
+        }
+    }
+}
+
 /// The point of the central axis of the force system (`force`, `torque` about `about`) nearest
 /// to `near`: the axis passes through `about + force × torque / |force|²` along `force`.
 pub(crate) fn on_line_of_action<T: Real>(
@@ -204,4 +509,162 @@ pub(crate) fn on_line_of_action<T: Real>(
     }
     let on_axis = about + force.cross(torque) / f2;
     on_axis + force * (force.dot(&(near - on_axis)) / f2)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape;
+    use crate::waves::{AiryComponent, AiryWaves, CalmSurface, HeightGrid, SurfaceFn};
+    use alloc::vec;
+    use alloc::vec::Vec;
+    use nalgebra::{Point3, Translation3, UnitQuaternion};
+
+    fn mesh(shape: Result<shape::Shape<f64>, Error>) -> Mesh<f64> {
+        let (vertices, triangles) = shape.unwrap();
+        Mesh::new(vertices, triangles).unwrap()
+    }
+
+    /// A surface that is calm but says it may be 0.3 m off the still plane: the walk with
+    /// deep vertices and crossed leaves, against the still-water answer.
+    struct FlatWithBound;
+
+    impl WaterSurface<f64> for FlatWithBound {
+        fn elevations(
+            &self,
+            _: &Water<f64>,
+            _: &[Point3<f64>],
+            _: f64,
+            elevations: &mut [f64],
+        ) -> Result<(), Error> {
+            elevations.fill(0.0);
+            Ok(())
+        }
+        fn elevation_bound(&self) -> Option<f64> {
+            Some(0.3)
+        }
+    }
+
+    fn close(a: &Buoyancy<f64>, b: &Buoyancy<f64>, scale: f64) {
+        let tol = 1e-11 * scale;
+        assert!(
+            (a.force - b.force).norm() < tol,
+            "{:?} {:?}",
+            a.force,
+            b.force
+        );
+        assert!(
+            (a.torque - b.torque).norm() < tol,
+            "{:?} {:?}",
+            a.torque,
+            b.torque
+        );
+        assert!(
+            (a.submerged_volume - b.submerged_volume).abs() < tol,
+            "{} {}",
+            a.submerged_volume,
+            b.submerged_volume
+        );
+        assert!(
+            (a.center_of_buoyancy - b.center_of_buoyancy).norm() < 1e-9,
+            "{:?} {:?}",
+            a.center_of_buoyancy,
+            b.center_of_buoyancy
+        );
+        assert_eq!(
+            (a.fully_submerged, a.partially_submerged),
+            (b.fully_submerged, b.partially_submerged)
+        );
+    }
+
+    #[test]
+    fn walk_equals_scan_under_every_kind_of_surface() {
+        let meshes = [
+            mesh(shape::torus(1.0, 0.4, 48, 24)),
+            mesh(shape::uv_sphere(0.8, 40, 20)),
+            mesh(shape::cube(6)),
+        ];
+        let airy = AiryWaves::new(
+            (0..4)
+                .map(|i| AiryComponent {
+                    amplitude: 0.06,
+                    wavelength: 1.5 + i as f64,
+                    direction: Vector3::new((i as f64).cos(), 0.0, (i as f64).sin()),
+                    phase: 0.4 * i as f64,
+                })
+                .collect(),
+            None,
+        )
+        .unwrap();
+        let grid = HeightGrid::new(
+            (0..64 * 64)
+                .map(|k| 0.1 * ((k % 64) as f64 * 0.3).sin() * ((k / 64) as f64 * 0.2).cos())
+                .collect(),
+            64,
+            64,
+            Point3::new(-4.0, 0.0, -4.0),
+            Vector3::x() * 0.125,
+            Vector3::z() * 0.125,
+            true,
+        )
+        .unwrap();
+        let unbounded = SurfaceFn(|q: &Point3<f64>, t: f64| 0.05 * (1.3 * q.x - t).cos());
+        let surfaces: [&dyn WaterSurface<f64>; 4] = [&airy, &grid, &FlatWithBound, &unbounded];
+        let water = Water::default();
+        for mesh in &meshes {
+            let mesh: &Mesh<f64> = mesh;
+            for k in 0..12 {
+                let angle = 0.37 * k as f64;
+                let pose = Pose::from_parts(
+                    Translation3::new(0.1 * angle.sin(), 0.9 - 0.15 * k as f64, 0.2),
+                    UnitQuaternion::from_euler_angles(angle, 0.5 * angle, 0.2),
+                );
+                let scale = water.specific_weight() * mesh.volume();
+                for surface in surfaces {
+                    let walk = mesh.buoyancy_in_waves(&pose, &water, surface, 0.3 * angle);
+                    let scan = mesh.buoyancy_in_waves_scan(&pose, &water, surface, 0.3 * angle);
+                    close(&walk.unwrap(), &scan.unwrap(), scale);
+                }
+                let calm = mesh
+                    .buoyancy_in_waves(&pose, &water, &CalmSurface, 0.0)
+                    .unwrap();
+                let flat = mesh
+                    .buoyancy_in_waves(&pose, &water, &FlatWithBound, 0.0)
+                    .unwrap();
+                close(&calm, &flat, scale);
+            }
+        }
+    }
+
+    #[cfg(feature = "rayon")]
+    #[test]
+    fn parallel_walk_is_bit_identical() {
+        let mesh = mesh(shape::torus(1.0, 0.4, 400, 60));
+        let airy = AiryWaves::new(
+            vec![AiryComponent {
+                amplitude: 0.1,
+                wavelength: 2.0,
+                direction: Vector3::x(),
+                phase: 0.0,
+            }],
+            None,
+        )
+        .unwrap();
+        let water = Water::default();
+        let poses: Vec<Pose<f64>> = (0..5)
+            .map(|k| {
+                Pose::from_parts(
+                    Translation3::new(0.0, 0.3 - 0.15 * k as f64, 0.0),
+                    UnitQuaternion::from_euler_angles(0.3 * k as f64, 0.2, 0.1),
+                )
+            })
+            .collect();
+        for pose in &poses {
+            let serial = mesh.buoyancy_in_waves(pose, &water, &airy, 1.0).unwrap();
+            let parallel = mesh
+                .par_buoyancy_in_waves(pose, &water, &airy, 1.0)
+                .unwrap();
+            assert_eq!(serial, parallel);
+        }
+    }
 }

@@ -4,6 +4,7 @@ use alloc::vec::Vec;
 
 use nalgebra::{Point3, Vector3};
 
+use super::cosine;
 use super::{WaterSurface, amplitude_sum, angular_frequency, resolve};
 use crate::{Error, Real, Water};
 
@@ -230,11 +231,32 @@ impl<T: Real> WaterSurface<T> for AiryWaves<T> {
         time: T,
         elevations: &mut [T],
     ) -> Result<(), Error> {
-        elevations.fill(T::zero());
+        // The positions apart, each axis contiguous, and the sum in f64, so that the loop over
+        // the points vectorises (see `cosine`).
+        let axis = |k: usize| -> Vec<f64> { points.iter().map(|q| q[k].to_f64()).collect() };
+        let (x, y, z) = (axis(0), axis(1), axis(2));
+        let largest = |v: &[f64]| v.iter().fold(0.0, |m: f64, c| m.max(c.abs()));
+        let extent = [largest(&x), largest(&y), largest(&z)];
+        let mut sum = alloc::vec![0.0; points.len()];
         for w in resolve(&self.components, water, self.depth)? {
-            for (eta, q) in elevations.iter_mut().zip(points) {
-                *eta += w.amplitude * w.phase_at(&q.coords, time).cos();
+            // The phase `k·q − ωt + φ`.
+            let k = w.k.map(T::to_f64);
+            let offset = (w.phase - w.omega * time).to_f64();
+            let amplitude = w.amplitude.to_f64();
+            let phases = (0..points.len()).map(|i| k.x * x[i] + k.y * y[i] + k.z * z[i] + offset);
+            let bound = k.x.abs() * extent[0] + k.y.abs() * extent[1] + k.z.abs() * extent[2];
+            if cosine::in_range(bound + offset.abs()) {
+                for (eta, phase) in sum.iter_mut().zip(phases) {
+                    *eta += amplitude * cosine::cos_in_range(phase);
+                }
+            } else {
+                for (eta, phase) in sum.iter_mut().zip(phases) {
+                    *eta += amplitude * cosine::cos(phase);
+                }
             }
+        }
+        for (eta, s) in elevations.iter_mut().zip(&sum) {
+            *eta = T::from_f64_lossy(*s);
         }
         Ok(())
     }

@@ -2,7 +2,7 @@
 
 use alloc::vec::Vec;
 
-use nalgebra::{Matrix2, Point3, Vector2, Vector3};
+use nalgebra::{Matrix2, Point3, Vector3};
 
 use super::WaterSurface;
 use crate::{Error, Real, Water};
@@ -129,39 +129,55 @@ impl<T: Real> HeightGrid<T> {
         &self.heights
     }
 
-    /// The height at the point of grid coordinates `(s, t)` (in steps from the origin).
-    fn at(&self, s: T, t: T) -> T {
-        let (i, fs) = self.cell(s, self.columns);
-        let (j, ft) = self.cell(t, self.rows);
-        let next = |k: usize, n: usize| {
-            if self.periodic {
-                (k + 1) % n
-            } else {
-                (k + 1).min(n - 1)
-            }
-        };
-        let (i1, j1) = (next(i, self.columns), next(j, self.rows));
-        let h = |i: usize, j: usize| self.heights[j * self.columns + i];
-        let one = T::one();
-        (h(i, j) * (one - fs) + h(i1, j) * fs) * (one - ft)
-            + (h(i, j1) * (one - fs) + h(i1, j1) * fs) * ft
+    /// The height at the point of grid coordinates `(s, t)` (in steps from the origin),
+    /// interpolated in `f64`.
+    #[inline(always)]
+    fn at(&self, s: f64, t: f64) -> T {
+        let (i, i1, fs) = self.cell(s, self.columns);
+        let (j, j1, ft) = self.cell(t, self.rows);
+        let (row, next_row) = (j * self.columns, j1 * self.columns);
+        let h = |k: usize| self.heights.get(k).map_or(0.0, |h| h.to_f64());
+        let near = h(row + i) + (h(row + i1) - h(row + i)) * fs;
+        let far = h(next_row + i) + (h(next_row + i1) - h(next_row + i)) * fs;
+        T::from_f64_lossy(near + (far - near) * ft)
     }
 
-    /// The cell index along an axis of `n` nodes and the fraction within it, for coordinate `x`.
-    fn cell(&self, x: T, n: usize) -> (usize, T) {
-        let count = T::from_f64_lossy(n as f64);
+    /// Along an axis of `n` nodes, for coordinate `x`: the cell's first node, the next node
+    /// (wrapped round when periodic, the last one repeated beyond the end otherwise) and the
+    /// fraction within the cell, in `[0, 1]`. The coordinate is split in `f64`.
+    #[inline(always)]
+    fn cell(&self, x: f64, n: usize) -> (usize, usize, f64) {
         if self.periodic {
-            let wrapped = x - (x / count).floor() * count;
-            let floor = wrapped.floor();
-            // `wrapped` can round up to `count` itself.
-            let index = (floor.to_f64() as usize).min(n - 1);
-            (index, (wrapped - floor).min(T::one()))
+            let whole = floor(x);
+            let fraction = (x - whole).min(1.0);
+            let index = if whole >= 0.0 && whole < n as f64 {
+                whole as usize
+            } else {
+                // `whole` is an integer below 2⁵³ in magnitude here, or beyond it and even.
+                libm::fmod(whole, n as f64).rem_euclid(n as f64) as usize % n
+            };
+            let next = if index + 1 == n { 0 } else { index + 1 };
+            (index, next, fraction)
         } else {
-            let last = count - T::one();
-            let clamped = x.max(T::zero()).min(last);
-            let index = (clamped.floor().to_f64() as usize).min(n - 2);
-            (index, clamped - T::from_f64_lossy(index as f64))
+            let clamped = x.max(0.0).min((n - 1) as f64);
+            let index = (floor(clamped) as usize).min(n - 2);
+            (index, index + 1, clamped - index as f64)
         }
+    }
+}
+
+/// `⌊x⌋` by truncation where it is exact (`|x| < 2⁵²`), without a call.
+#[inline(always)]
+fn floor(x: f64) -> f64 {
+    if x.abs() < 4_503_599_627_370_496.0 {
+        let truncated = x as i64 as f64;
+        if truncated > x {
+            truncated - 1.0
+        } else {
+            truncated
+        }
+    } else {
+        libm::floor(x)
     }
 }
 
@@ -173,10 +189,15 @@ impl<T: Real> WaterSurface<T> for HeightGrid<T> {
         _: T,
         elevations: &mut [T],
     ) -> Result<(), Error> {
+        // Grid coordinates `(s, t) = G·(d·c, d·r)` for `d = q − origin`, as two dot products.
+        let g = &self.to_grid;
+        let (c, r) = (&self.column_step, &self.row_step);
+        let along_s = (c * g[(0, 0)] + r * g[(0, 1)]).map(T::to_f64);
+        let along_t = (c * g[(1, 0)] + r * g[(1, 1)]).map(T::to_f64);
+        let origin = self.origin.coords.map(T::to_f64);
         for (eta, q) in elevations.iter_mut().zip(points) {
-            let d = q - self.origin;
-            let st = self.to_grid * Vector2::new(d.dot(&self.column_step), d.dot(&self.row_step));
-            *eta = self.at(st.x, st.y);
+            let d = q.coords.map(T::to_f64) - origin;
+            *eta = self.at(d.dot(&along_s), d.dot(&along_t));
         }
         Ok(())
     }

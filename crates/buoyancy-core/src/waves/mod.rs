@@ -22,6 +22,7 @@
 //! integrates the pressure over the wetted surface (see `wave_pressure`).
 
 mod airy;
+mod cosine;
 mod gerstner;
 mod grid;
 mod spectrum;
@@ -57,10 +58,12 @@ pub trait WaterSurface<T: Real>: Sync {
         elevations: &mut [T],
     ) -> Result<(), Error>;
 
-    /// A bound on `|η|` everywhere and at all times (m), if the surface knows one. A vertex
-    /// higher above the still plane than this bound plus the mesh's longest edge belongs to dry
-    /// triangles only, so the surface is not evaluated there. `None` (the default): evaluated
-    /// at every vertex.
+    /// A bound on `|η|` everywhere and at all times (m), if the surface knows one: what lets
+    /// [`Mesh::buoyancy_in_waves`] walk its hierarchy. A vertex higher above the still plane
+    /// than this bound plus the mesh's longest edge belongs to dry triangles only, so the
+    /// surface is not evaluated there; the nodes more than the bound below the still plane are
+    /// summed whole. `Some(0)` is still water. `None` (the default): every vertex evaluated,
+    /// every triangle integrated on its own. A bound that is exceeded gives wrong results.
     fn elevation_bound(&self) -> Option<T> {
         None
     }
@@ -80,6 +83,11 @@ impl<T: Real> WaterSurface<T> for CalmSurface {
     ) -> Result<(), Error> {
         elevations.fill(T::zero());
         Ok(())
+    }
+
+    /// Zero: the surface is the still plane.
+    fn elevation_bound(&self) -> Option<T> {
+        Some(T::zero())
     }
 }
 
