@@ -218,6 +218,10 @@ pub struct Damping<T: Real> {
     /// Torque about [`torque_point`](Self::torque_point), N·m: the moments of the pressure drag
     /// plus the angular damping.
     pub torque: Vector3<T>,
+    /// The angular damping `τ_ω` alone (included in [`torque`](Self::torque)), N·m: a body
+    /// made of several meshes takes it back from each and adds [`angular_damping`] once for the
+    /// whole body.
+    pub angular_torque: Vector3<T>,
     /// The body's center of mass (the mesh centroid under the pose), world frame, m.
     pub torque_point: Point3<T>,
     /// Wetted area `A_wet`, m²: the area of the surface under water.
@@ -232,6 +236,7 @@ impl<T: Real> Damping<T> {
         Damping {
             force: Vector3::zeros(),
             torque: Vector3::zeros(),
+            angular_torque: Vector3::zeros(),
             torque_point,
             wetted_area: T::zero(),
             wetted_fraction: T::zero(),
@@ -243,6 +248,26 @@ impl<T: Real> Damping<T> {
     pub fn torque_about(&self, q: &Point3<T>) -> Vector3<T> {
         self.torque + (self.torque_point - q).cross(&self.force)
     }
+}
+
+/// The angular damping of the model, `τ_ω = −f·ρ·V^{5/3}·(a₁ + a₂·|ω|)·ω` (N·m, world frame),
+/// for angular velocity `ω` (rad/s), wetted fraction `f`, volume `V` (m³; negative counts as
+/// zero) and water density `ρ` (kg/m³): what [`Mesh::damping`] adds for one mesh, and what a
+/// body of several meshes adds once for all of them (`f` their total wetted area over their
+/// total area, `V` their total volume).
+pub fn angular_damping<T: Real>(
+    omega: &Vector3<T>,
+    wetted_fraction: T,
+    volume: T,
+    density: T,
+    coefficients: &DampingCoefficients<T>,
+) -> Vector3<T> {
+    let size = density * volume.max(T::zero()).powf(T::from_f64_lossy(5.0 / 3.0));
+    -omega
+        * (wetted_fraction
+            * size
+            * (coefficients.angular_drag_linear
+                + coefficients.angular_drag_quadratic * omega.norm()))
 }
 
 /// The pressure drag of the model, summed over wetted triangles: the body's velocity and the
@@ -417,15 +442,17 @@ impl<T: Real> Mesh<T> {
         } else {
             zero
         };
-        let size = water.density() * self.volume.powf(T::from_f64_lossy(5.0 / 3.0));
-        let angular = -omega
-            * (wetted_fraction
-                * size
-                * (coefficients.angular_drag_linear
-                    + coefficients.angular_drag_quadratic * omega.norm()));
+        let angular = angular_damping(
+            angular_velocity,
+            wetted_fraction,
+            self.volume,
+            water.density(),
+            coefficients,
+        );
         let result = Damping {
             force: frame.rotation * drag.force,
-            torque: frame.rotation * (drag.torque + angular),
+            torque: frame.rotation * drag.torque + angular,
+            angular_torque: angular,
             torque_point: frame.center_of_mass,
             wetted_area,
             wetted_fraction,

@@ -14,6 +14,8 @@ use crate::MeshDefects;
 pub enum Error {
     /// The mesh has no triangles.
     EmptyMesh,
+    /// A floating body was given no mesh ([`controller`](crate::controller)).
+    EmptyBody,
     /// More vertices than a `u32` index can address.
     TooManyVertices {
         /// Number of vertices given.
@@ -116,6 +118,7 @@ impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Error::EmptyMesh => write!(f, "the mesh has no triangles"),
+            Error::EmptyBody => write!(f, "a floating body needs at least one mesh"),
             Error::TooManyVertices { count } => write!(
                 f,
                 "the mesh has {count} vertices; at most {} can be indexed with u32",

@@ -46,6 +46,7 @@ extern crate std;
 
 mod buoyancy;
 mod clip;
+pub mod controller;
 pub mod damping;
 mod error;
 mod frame;

@@ -16,11 +16,6 @@ pub(crate) fn point_to_nalgebra(v: Vector) -> Point3<f64> {
     Point3::from(vector_to_nalgebra(v))
 }
 
-/// An `f64` nalgebra vector as a rapier vector (rounded to `f32`).
-pub(crate) fn vector_to_rapier(v: &Vector3<f64>) -> Vector {
-    Vector::from(v.cast::<f32>())
-}
-
 /// A rapier pose as an `f64` nalgebra isometry (the quaternion renormalised in `f64`).
 pub(crate) fn pose_to_nalgebra(pose: &Pose) -> Isometry3<f64> {
     let rotation = UnitQuaternion::<f32>::from(pose.rotation)

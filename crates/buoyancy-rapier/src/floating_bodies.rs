@@ -2,25 +2,32 @@
 
 use std::collections::HashMap;
 
+use buoyancy_core::controller::{
+    BodyOptions, BodyState, Command, Controller, FloatReport, Motion, Settings,
+};
+use buoyancy_core::nalgebra::Matrix3;
 use buoyancy_core::{DampingCoefficients, Mesh, Method, Pose, Water};
 use rapier3d::math::Vector;
-use rapier3d::prelude::{ColliderSet, RigidBodyHandle, RigidBodySet};
+use rapier3d::prelude::{ColliderSet, RigidBody, RigidBodyHandle, RigidBodySet, RigidBodyType};
 
-use crate::convert::{point_to_nalgebra, vector_to_nalgebra};
-use crate::evaluation::{Evaluation, evaluate};
-use crate::floating_body::FloatingBody;
-use crate::settings::Settings;
-use crate::{Error, FloatOptions, FloatReport};
+use crate::body_parts::mesh_colliders;
+use crate::convert::{point_to_nalgebra, pose_to_nalgebra, vector_to_nalgebra};
+use crate::{Error, FloatOptions};
 
-/// The bodies that float in one rapier world, and their water.
+/// The bodies that float in one rapier world, and their water: rapier's glue over the core's
+/// [`Controller`], which keeps the books (see the [crate documentation](crate)).
 ///
 /// The world's settings (water, method, damping) apply to every body without an override in
 /// its [`FloatOptions`].
 #[derive(Debug, Clone)]
 pub struct FloatingBodies {
-    settings: Settings,
-    bodies: Vec<FloatingBody>,
+    controller: Controller,
+    /// The body of each of the controller's numbers, and back.
+    handles: Vec<RigidBodyHandle>,
     index: HashMap<RigidBodyHandle, usize>,
+    /// Each step's states and commands, kept so that a step does not allocate.
+    states: Vec<BodyState>,
+    commands: Vec<Command>,
 }
 
 impl FloatingBodies {
@@ -40,55 +47,58 @@ impl FloatingBodies {
             water = water.with_surface(-g, 0.0)?;
         }
         Ok(FloatingBodies {
-            settings: Settings {
+            controller: Controller::new(Settings {
                 water,
                 method: Method::Exact,
                 damping: DampingCoefficients::default(),
-            },
-            bodies: Vec::new(),
+            }),
+            handles: Vec::new(),
             index: HashMap::new(),
+            states: Vec::new(),
+            commands: Vec::new(),
         })
     }
 
     /// The world's water.
     pub fn water(&self) -> &Water<f64> {
-        &self.settings.water
+        &self.controller.settings().water
     }
     /// Sets the world's water (level, normal, density, gravity), e.g.
     /// `fb.water().with_surface(normal, 2.0)?`.
     pub fn set_water(&mut self, water: Water<f64>) {
-        self.settings.water = water;
+        self.controller.settings_mut().water = water;
     }
     /// The same world with the surface at `level` m along its normal.
     pub fn with_level(mut self, level: f64) -> Result<Self, Error> {
-        let water = &self.settings.water;
-        self.settings.water = water.with_surface(water.normal().into_inner(), level)?;
+        let water = self.water();
+        let water = water.with_surface(water.normal().into_inner(), level)?;
+        self.set_water(water);
         Ok(self)
     }
     /// The world's method.
     pub fn method(&self) -> Method {
-        self.settings.method
+        self.controller.settings().method
     }
     /// Sets the world's method.
     pub fn set_method(&mut self, method: Method) {
-        self.settings.method = method;
+        self.controller.settings_mut().method = method;
     }
     /// The world's damping coefficients.
     pub fn damping(&self) -> &DampingCoefficients<f64> {
-        &self.settings.damping
+        &self.controller.settings().damping
     }
     /// Sets the world's damping coefficients ([`DampingCoefficients::off`] for none).
     pub fn set_damping(&mut self, damping: DampingCoefficients<f64>) {
-        self.settings.damping = damping;
+        self.controller.settings_mut().damping = damping;
     }
 
     /// Number of registered bodies.
     pub fn len(&self) -> usize {
-        self.bodies.len()
+        self.handles.len()
     }
     /// Whether no body is registered.
     pub fn is_empty(&self) -> bool {
-        self.bodies.is_empty()
+        self.handles.is_empty()
     }
     /// Whether `body` is registered.
     pub fn contains(&self, body: RigidBodyHandle) -> bool {
@@ -110,18 +120,18 @@ impl FloatingBodies {
         colliders: &ColliderSet,
         options: FloatOptions,
     ) -> Result<(), Error> {
-        let registered = FloatingBody::new(body, bodies, colliders, options)?;
+        let parts = mesh_colliders(body, bodies, colliders, &options)?;
+        let overrides = BodyOptions {
+            method: options.method,
+            water: options.water,
+            damping: options.damping,
+        };
         if let Some(&i) = self.index.get(&body) {
-            let b = &mut self.bodies[i];
-            (b.parts, b.options, b.volume, b.surface_area) = (
-                registered.parts,
-                registered.options,
-                registered.volume,
-                registered.surface_area,
-            );
+            self.controller.replace(i, parts, overrides)?;
         } else {
-            self.index.insert(body, self.bodies.len());
-            self.bodies.push(registered);
+            let i = self.controller.add(parts, overrides)?;
+            self.index.insert(body, i);
+            self.handles.push(body);
         }
         Ok(())
     }
@@ -129,17 +139,25 @@ impl FloatingBodies {
     /// Stops `body` from floating and takes back the force and torque the adapter added to it.
     /// Returns whether it was registered.
     pub fn unregister(&mut self, body: RigidBodyHandle, bodies: &mut RigidBodySet) -> bool {
-        let Some(i) = self.index.remove(&body) else {
+        let Some(take_back) = self.remove(body) else {
             return false;
         };
-        let removed = self.bodies.swap_remove(i);
-        if let Some(moved) = self.bodies.get(i) {
-            self.index.insert(moved.handle, i);
-        }
         if let Some(rb) = bodies.get_mut(body) {
-            removed.share.take_back(rb);
+            apply_regardless_of_type(rb, &take_back);
         }
         true
+    }
+
+    /// Forgets `body` and returns the command that takes its share back off, `None` if it was
+    /// not registered.
+    fn remove(&mut self, body: RigidBodyHandle) -> Option<Command> {
+        let i = self.index.remove(&body)?;
+        let take_back = self.controller.remove(i)?;
+        self.handles.swap_remove(i);
+        if let Some(&moved) = self.handles.get(i) {
+            self.index.insert(moved, i);
+        }
+        Some(take_back)
     }
 
     /// Tells the adapter that the application reset the forces and torques of `body`
@@ -150,25 +168,27 @@ impl FloatingBodies {
     /// forces, `forget_applied`; the next [`apply`](Self::apply) adds the whole share again.
     pub fn forget_applied(&mut self, body: RigidBodyHandle) {
         if let Some(&i) = self.index.get(&body) {
-            self.bodies[i].share.forget();
+            self.controller.forget_applied(i);
         }
     }
 
     /// The last report of `body`: what was computed and applied at the last
     /// [`apply`](Self::apply).
     pub fn report(&self, body: RigidBodyHandle) -> Option<&FloatReport> {
-        self.index.get(&body).map(|&i| &self.bodies[i].report)
+        self.index
+            .get(&body)
+            .and_then(|&i| self.controller.report(i))
     }
 
     /// The meshes a body floats with (one per shape, in the shape's frame) and their
     /// shape → body poses.
     pub fn meshes(&self, body: RigidBodyHandle) -> impl Iterator<Item = (&Mesh<f64>, &Pose<f64>)> {
-        self.index.get(&body).into_iter().flat_map(move |&i| {
-            self.bodies[i]
-                .parts
-                .iter()
-                .map(|p| (&p.mesh, &p.shape_to_body))
-        })
+        self.index
+            .get(&body)
+            .and_then(|&i| self.controller.parts(i))
+            .into_iter()
+            .flatten()
+            .map(|p| (&p.mesh, &p.shape_to_body))
     }
 
     /// Computes buoyancy and damping for every registered body at its current pose and
@@ -184,46 +204,69 @@ impl FloatingBodies {
     /// No allocation once every body has been seen (the meshes are prepared at registration).
     pub fn apply(&mut self, bodies: &mut RigidBodySet, dt: f32) {
         self.forget_removed(bodies);
-        let world = &self.settings;
-        let shared: &RigidBodySet = bodies;
-        let compute = |b: &mut FloatingBody| {
-            let rb = &shared[b.handle];
-            b.share.forget_if_wiped(rb);
-            b.evaluation = evaluate(b, rb, &world.resolve(&b.options), f64::from(dt));
-            b.report = b.evaluation.report(point_to_nalgebra(rb.center_of_mass()));
-        };
-        #[cfg(feature = "rayon")]
-        {
-            use rayon::prelude::*;
-            self.bodies.par_iter_mut().for_each(compute);
-        }
-        #[cfg(not(feature = "rayon"))]
-        self.bodies.iter_mut().for_each(compute);
-
-        for b in &mut self.bodies {
-            let (force, torque) = match b.evaluation {
-                Evaluation::Inactive => continue,
-                Evaluation::NotFinite => (Vector::ZERO, Vector::ZERO),
-                Evaluation::Floating { force, torque, .. } => (force, torque),
-            };
-            let gravity = self.settings.resolve(&b.options).water.gravity() as f32;
-            let size = b.size() as f32;
-            b.share
-                .hold(&mut bodies[b.handle], force, torque, gravity, size);
+        self.states.clear();
+        self.states
+            .extend(self.handles.iter().map(|&h| body_state(&bodies[h])));
+        self.commands.resize(self.handles.len(), Command::default());
+        self.controller
+            .step(&self.states, f64::from(dt), &mut self.commands);
+        for (&handle, command) in self.handles.iter().zip(&self.commands) {
+            if command.adds_anything() {
+                let rb = &mut bodies[handle];
+                rb.add_force(Vector::from(command.add_force), command.wake);
+                rb.add_torque(Vector::from(command.add_torque), command.wake);
+            }
         }
     }
 
-    /// Forgets the bodies no longer in `bodies`.
+    /// Forgets the bodies no longer in `bodies` (nothing to take back from them).
     fn forget_removed(&mut self, bodies: &RigidBodySet) {
-        if self.bodies.iter().all(|b| bodies.contains(b.handle)) {
-            return;
+        while let Some(&gone) = self.handles.iter().find(|h| !bodies.contains(**h)) {
+            self.remove(gone);
         }
-        self.bodies.retain(|b| bodies.contains(b.handle));
-        self.index = self
-            .bodies
-            .iter()
-            .enumerate()
-            .map(|(i, b)| (b.handle, i))
-            .collect();
+    }
+}
+
+/// What the controller reads of a rapier body.
+fn body_state(rb: &RigidBody) -> BodyState {
+    let props = rb.mass_properties();
+    let i = &props.effective_world_inv_inertia;
+    BodyState {
+        pose: pose_to_nalgebra(rb.position()),
+        center_of_mass: point_to_nalgebra(rb.center_of_mass()),
+        linear_velocity: vector_to_nalgebra(rb.linvel()),
+        angular_velocity: vector_to_nalgebra(rb.angvel()),
+        mass: f64::from(rb.mass()),
+        inverse_mass: vector_to_nalgebra(props.effective_inv_mass),
+        inverse_inertia: Matrix3::new(
+            i.m11, i.m12, i.m13, i.m12, i.m22, i.m23, i.m13, i.m23, i.m33,
+        )
+        .cast::<f64>(),
+        gravity_scale: f64::from(rb.gravity_scale()),
+        applied_force: rb.user_force().into(),
+        applied_torque: rb.user_torque().into(),
+        motion: if rb.is_dynamic() && rb.is_enabled() {
+            Motion::Dynamic
+        } else {
+            Motion::Inactive
+        },
+        sleeping: rb.is_sleeping(),
+    }
+}
+
+/// Applies `command` to `rb` even if it is not dynamic: rapier ignores `add_force` on such
+/// bodies, so they are made dynamic for the time of the addition.
+fn apply_regardless_of_type(rb: &mut RigidBody, command: &Command) {
+    if !command.adds_anything() {
+        return;
+    }
+    let body_type = rb.body_type();
+    if !body_type.is_dynamic() {
+        rb.set_body_type(RigidBodyType::Dynamic, false);
+    }
+    rb.add_force(Vector::from(command.add_force), false);
+    rb.add_torque(Vector::from(command.add_torque), false);
+    if !body_type.is_dynamic() {
+        rb.set_body_type(body_type, false);
     }
 }

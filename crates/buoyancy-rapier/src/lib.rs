@@ -97,21 +97,15 @@
 //! or result is not finite gets no force from the adapter (and the previous one is taken back);
 //! its report's [`outcome`](FloatReport::outcome) is [`Outcome::NotFinite`].
 
-mod applied_share;
+mod body_parts;
 mod convert;
 mod error;
-mod evaluation;
 mod floating_bodies;
-mod floating_body;
 mod options;
-mod report;
-mod semi_implicit;
-mod settings;
 mod shapes;
-mod wrench;
 
 pub use buoyancy_core;
+pub use buoyancy_core::controller::{FloatReport, Outcome};
 pub use error::Error;
 pub use floating_bodies::FloatingBodies;
 pub use options::{FloatOptions, FloatingColliders};
-pub use report::{FloatReport, Outcome};

@@ -1,5 +1,6 @@
 //! Collider shapes to closed triangle meshes, once, at registration.
 
+use buoyancy_core::controller::Part;
 use buoyancy_core::nalgebra::Point3;
 use buoyancy_core::{Mesh, Pose};
 use rapier3d::parry::shape::{Shape, TypedShape};
@@ -7,15 +8,6 @@ use rapier3d::prelude::ColliderHandle;
 
 use crate::Error;
 use crate::convert::{pose_to_nalgebra, vector_to_nalgebra};
-
-/// A closed mesh of one (sub-)shape of a collider, with its place on the body.
-#[derive(Debug, Clone)]
-pub(crate) struct FloatingPart {
-    /// The mesh, in the shape's frame.
-    pub mesh: Mesh<f64>,
-    /// Shape frame → body frame.
-    pub shape_to_body: Pose<f64>,
-}
 
 /// Appends the meshes of `shape` (placed on the body by `shape_to_body`) to `parts`.
 ///
@@ -27,7 +19,7 @@ pub(crate) fn append_meshes(
     shape: &dyn Shape,
     shape_to_body: Pose<f64>,
     subdivisions: u32,
-    parts: &mut Vec<FloatingPart>,
+    parts: &mut Vec<Part>,
 ) -> Result<(), Error> {
     let around = subdivisions.max(3);
     // Pole to pole; even so that a capsule's two hemispheres have whole rings.
@@ -68,7 +60,7 @@ pub(crate) fn append_meshes(
         weld_vertices(&mut points, &mut triangles);
     }
     let mesh = Mesh::new(points, triangles).map_err(|source| Error::Mesh { collider, source })?;
-    parts.push(FloatingPart {
+    parts.push(Part {
         mesh,
         shape_to_body,
     });

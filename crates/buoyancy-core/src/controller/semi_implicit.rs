@@ -1,12 +1,11 @@
-//! The damping made semi-implicit (see [Stability](crate#stability)): the damping wrench of the
-//! core taken at the end of the step, so that light bodies and bodies dropped fast neither
+//! The damping made semi-implicit (see [Stability](super#stability)): the damping wrench of the
+//! model taken at the end of the step, so that light bodies and bodies dropped fast neither
 //! overshoot nor oscillate.
 
-use buoyancy_core::nalgebra::{Matrix3, Vector3};
-use rapier3d::prelude::RigidBody;
+use nalgebra::{Matrix3, Vector3};
 
-use crate::convert::vector_to_nalgebra;
-use crate::wrench::Wrench;
+use super::state::BodyState;
+use super::wrench::Wrench;
 
 /// The generalized mass `M` of a rigid body, `f64`, world frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -21,14 +20,9 @@ pub(crate) struct GeneralizedMass {
 }
 
 impl GeneralizedMass {
-    /// rapier's effective mass properties of `rb`.
-    pub fn of(rb: &RigidBody) -> Self {
-        let props = rb.mass_properties();
-        let i = &props.effective_world_inv_inertia;
-        let inv_inertia = Matrix3::new(
-            i.m11, i.m12, i.m13, i.m12, i.m22, i.m23, i.m13, i.m23, i.m33,
-        )
-        .cast::<f64>();
+    /// The engine's effective mass properties of a body.
+    pub fn of(state: &BodyState) -> Self {
+        let inv_inertia = state.inverse_inertia;
         let mut invertible = inv_inertia;
         for k in 0..3 {
             if invertible[(k, k)] == 0.0 {
@@ -37,7 +31,7 @@ impl GeneralizedMass {
         }
         let inertia = invertible.try_inverse().unwrap_or_else(Matrix3::zeros);
         GeneralizedMass {
-            inv_mass: vector_to_nalgebra(props.effective_inv_mass),
+            inv_mass: state.inverse_mass,
             inv_inertia,
             inertia,
         }
@@ -82,7 +76,7 @@ pub(crate) fn semi_implicit_damping(
         .sum();
     let velocity_norm2 = linear_momentum_norm2 + omega.dot(&(mass.inertia * omega));
     let rate = if wrench_norm2 > 0.0 && velocity_norm2 > 0.0 {
-        (wrench_norm2 / velocity_norm2).sqrt()
+        libm::sqrt(wrench_norm2 / velocity_norm2)
     } else {
         0.0
     };

@@ -1,29 +1,29 @@
-//! What the adapter computed and applied for one body at the last
-//! [`FloatingBodies::apply`](crate::FloatingBodies::apply).
+//! What the controller computed and applied for a body at its last step.
 
-use buoyancy_core::nalgebra::{Point3, Vector3};
+use nalgebra::{Point3, Vector3};
 
-/// What became of a body at the last [`FloatingBodies::apply`](crate::FloatingBodies::apply).
+/// What became of a body at the last [`Controller::step`](super::Controller::step).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[non_exhaustive]
 pub enum Outcome {
     /// Registered, and no `apply` since: nothing computed or applied yet.
     #[default]
     NotEvaluated,
-    /// Buoyancy and damping were computed, and the body holds them as the adapter's share of
+    /// Buoyancy and damping were computed, and the body holds them as the controller's share of
     /// its force and torque.
     Applied,
-    /// The body is kinematic, fixed or disabled: nothing was computed, and the share it had is
-    /// left as it is (rapier ignores `add_force` on such bodies but keeps their force).
+    /// The body is kinematic, fixed or disabled ([`Motion::Inactive`](super::Motion::Inactive)):
+    /// nothing was computed, and the share it had is left as it is (engines ignore new forces
+    /// on such bodies but keep the ones they hold).
     Inactive,
     /// A pose, velocity or result was not finite: no force was applied, and the share the body
     /// had was taken back.
     NotFinite,
 }
 
-/// What the adapter computed and applied for one body at the last
-/// [`FloatingBodies::apply`](crate::FloatingBodies::apply), world frame, SI units, torques about
-/// the body's world center of mass.
+/// What the controller computed and applied for one body at the last
+/// [`Controller::step`](super::Controller::step), world frame, SI units, torques about the
+/// body's world center of mass.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct FloatReport {
     /// Volume under water, m³ (all floating parts).
@@ -31,13 +31,13 @@ pub struct FloatReport {
     /// Center of buoyancy, m: the volume-weighted mean of the parts' centers (the projection
     /// of the center of mass on the surface when nothing is under water).
     pub center_of_buoyancy: Point3<f64>,
-    /// The body's world center of mass (rapier's), m.
+    /// The body's world center of mass (the engine's), m.
     pub center_of_mass: Point3<f64>,
     /// Buoyant force, N.
     pub buoyancy_force: Vector3<f64>,
     /// Torque of the buoyancy about the center of mass, N·m.
     pub buoyancy_torque: Vector3<f64>,
-    /// Damping force as applied, after the semi-implicit step (see [Stability](crate#stability)),
+    /// Damping force as applied, after the semi-implicit step (see [Stability](super#stability)),
     /// N.
     pub damping_force: Vector3<f64>,
     /// Damping torque as applied, after the semi-implicit step, N·m.
@@ -52,7 +52,7 @@ pub struct FloatReport {
 impl FloatReport {
     /// The report of a body that got no force computed: zero volume, forces and area, the
     /// center of buoyancy at the center of mass.
-    pub(crate) fn without_forces(center_of_mass: Point3<f64>, outcome: Outcome) -> Self {
+    pub fn without_forces(center_of_mass: Point3<f64>, outcome: Outcome) -> Self {
         FloatReport {
             center_of_mass,
             center_of_buoyancy: center_of_mass,

@@ -1,6 +1,6 @@
-//! A force and a torque together.
+//! A force and a torque.
 
-use buoyancy_core::nalgebra::Vector3;
+use nalgebra::Vector3;
 
 /// A force (N) and a torque (N·m, about a point the context names), world frame, `f64`.
 #[derive(Debug, Clone, Copy, PartialEq)]

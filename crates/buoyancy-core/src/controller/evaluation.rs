@@ -1,0 +1,147 @@
+//! One body's buoyancy and damping at one step: the sum over its parts, the body's angular
+//! damping, the semi-implicit solve, and the force and torque to hold in the engine's `f32`.
+
+use nalgebra::{Point3, Vector3};
+
+use super::body::FloatingBody;
+use super::report::{FloatReport, Outcome};
+use super::semi_implicit::{GeneralizedMass, semi_implicit_damping};
+use super::settings::Settings;
+use super::state::{BodyState, Motion};
+use super::wrench::Wrench;
+use crate::damping::angular_damping;
+
+/// What evaluating one body at one step gives.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Evaluation {
+    /// The body is not dynamic: nothing computed, its share stays as it is.
+    Inactive,
+    /// A pose, velocity or result was not finite: its share becomes zero.
+    NotFinite,
+    /// Its share becomes this force and torque (world frame, the torque about the center of
+    /// mass); `report` says what was computed.
+    Floating {
+        report: FloatReport,
+        force: Vector3<f32>,
+        torque: Vector3<f32>,
+    },
+}
+
+impl Evaluation {
+    /// The report of this evaluation, for a body whose world center of mass is
+    /// `center_of_mass`.
+    pub fn report(&self, center_of_mass: Point3<f64>) -> FloatReport {
+        match self {
+            Evaluation::Inactive => FloatReport::without_forces(center_of_mass, Outcome::Inactive),
+            Evaluation::NotFinite => {
+                FloatReport::without_forces(center_of_mass, Outcome::NotFinite)
+            }
+            Evaluation::Floating { report, .. } => *report,
+        }
+    }
+}
+
+/// Buoyancy + damping of `body` in `state` with `settings` (already resolved for it), over a
+/// step of `dt` seconds.
+pub(crate) fn evaluate(
+    body: &FloatingBody,
+    state: &BodyState,
+    settings: &Settings,
+    dt: f64,
+) -> Evaluation {
+    if state.motion != Motion::Dynamic {
+        return Evaluation::Inactive;
+    }
+    let Some(mut report) = sum_parts(body, state, settings) else {
+        return Evaluation::NotFinite;
+    };
+    let water = &settings.water;
+    let gravity = -water.normal().into_inner() * (water.gravity() * state.gravity_scale);
+    let own_force = (state.applied_force - body.share.force).cast::<f64>();
+    let own_torque = (state.applied_torque - body.share.torque).cast::<f64>();
+    let others = Wrench {
+        force: report.buoyancy_force + gravity * state.mass + own_force,
+        torque: report.buoyancy_torque + own_torque,
+    };
+    let damping = semi_implicit_damping(
+        Wrench {
+            force: report.damping_force,
+            torque: report.damping_torque,
+        },
+        others,
+        &(state.linear_velocity - settings.damping.current()),
+        &state.angular_velocity,
+        &GeneralizedMass::of(state),
+        dt,
+    );
+    (report.damping_force, report.damping_torque) = (damping.force, damping.torque);
+
+    let force = (report.buoyancy_force + report.damping_force).cast::<f32>();
+    let torque = (report.buoyancy_torque + report.damping_torque).cast::<f32>();
+    let finite = |v: &Vector3<f32>| v.iter().all(|c| c.is_finite());
+    if !(finite(&force)
+        && finite(&torque)
+        && report.center_of_buoyancy.iter().all(|c| c.is_finite()))
+    {
+        return Evaluation::NotFinite;
+    }
+    Evaluation::Floating {
+        report,
+        force,
+        torque,
+    }
+}
+
+/// The body's buoyancy and (explicit) damping: the sums over its parts, torques about the
+/// world center of mass, the pressure drag of each part and the angular damping of the whole
+/// body ([`angular_damping`] with the parts' total wetted fraction and volume). `None` when the
+/// core rejects a pose or velocity (not finite).
+fn sum_parts(body: &FloatingBody, state: &BodyState, settings: &Settings) -> Option<FloatReport> {
+    let Settings {
+        water,
+        method,
+        damping,
+    } = settings;
+    let center_of_mass = state.center_of_mass;
+    let (velocity, omega) = (state.linear_velocity, state.angular_velocity);
+    let mut report = FloatReport {
+        center_of_mass,
+        outcome: Outcome::Applied,
+        ..Default::default()
+    };
+    let mut weighted_center = Vector3::zeros();
+    for part in &body.parts {
+        let pose = state.pose * part.shape_to_body;
+        let buoyancy = part.mesh.buoyancy(&pose, water, *method).ok()?;
+        // The core takes the velocity of the mesh's own centroid.
+        let centroid_velocity = velocity + omega.cross(&(buoyancy.torque_point - center_of_mass));
+        let drag = part
+            .mesh
+            .damping(&pose, &centroid_velocity, &omega, water, damping)
+            .ok()?;
+        report.submerged_volume += buoyancy.submerged_volume;
+        weighted_center += buoyancy.center_of_buoyancy.coords * buoyancy.submerged_volume;
+        report.buoyancy_force += buoyancy.force;
+        report.buoyancy_torque += buoyancy.torque_about(&center_of_mass);
+        report.damping_force += drag.force;
+        // The pressure drag's moment; the angular damping is the whole body's, below.
+        report.damping_torque += drag.torque_about(&center_of_mass) - drag.angular_torque;
+        report.wetted_area += drag.wetted_area;
+    }
+    if body.surface_area > 0.0 {
+        let wetted_fraction = (report.wetted_area / body.surface_area).min(1.0);
+        report.damping_torque += angular_damping(
+            &omega,
+            wetted_fraction,
+            body.volume,
+            water.density(),
+            damping,
+        );
+    }
+    report.center_of_buoyancy = if report.submerged_volume.abs() > 0.0 {
+        Point3::from(weighted_center / report.submerged_volume)
+    } else {
+        water.project(&center_of_mass)
+    };
+    Some(report)
+}

@@ -1,0 +1,275 @@
+//! Floating bodies in a physics engine, independent of the engine: one controller for every
+//! adapter (the rapier3d crate `buoyancy-rapier` and the Python `buoyancy.rapier`).
+//!
+//! A [`Controller`] holds the bodies that float, each made of one or more closed meshes
+//! ([`Part`]s placed on the body), with the water, method and damping coefficients (the
+//! controller's [`Settings`], overridden per body by [`BodyOptions`]). Once per step an adapter
+//! reads every body's [`BodyState`] from its engine, calls [`Controller::step`], and applies
+//! the returned [`Command`]s: a force and a torque to *add* to what the engine holds for the
+//! body, and whether to wake it. The controller computes the exact buoyancy, the hydrodynamic
+//! [damping](crate::damping), solves the damping semi-implicitly, and keeps the books of what
+//! it has added, so that the engine holds *the application's own forces + this step's
+//! buoyancy and damping*.
+//!
+//! # Forces the application adds itself
+//! Engines like rapier keep the forces added to a body until they are reset. The controller
+//! never resets them: it remembers the force and torque it added at the previous step (its
+//! *share*) and asks to add only the difference. A constant thrust the application added once
+//! stays. If the application resets a body's forces it must call
+//! [`Controller::forget_applied`] (the share was wiped too); [`Controller::remove`] returns the
+//! command that takes the share back off.
+//!
+//! * **Bodies the engine does not move by forces** ([`Motion::Inactive`]: kinematic, fixed,
+//!   disabled) get nothing computed and keep their share, so that a body made kinematic and
+//!   then dynamic again gets its buoyancy once, not twice.
+//! * **A wiped share.** A dynamic body whose engine force and torque are both exactly zero
+//!   while the share is not had them reset (rapier's NaN quarantine does that): the share is
+//!   forgotten, and the next step adds it whole.
+//! * **`f32`.** The share is kept in `f32`, what engines like rapier store, so that what is
+//!   taken back is exactly what was added.
+//!
+//! # Sleeping bodies
+//! A sleeping body is woken when the controller's force or torque on it has changed by more
+//! than 0.1 % (of the force plus the body's weight; the torque also by that force times the
+//! body's size) since it was last awake, so that slow changes, a rising tide, add up.
+//!
+//! # Stability
+//! The damping is made semi-implicit, so that a light body (large drag for its mass) and a body
+//! dropped fast into the water neither overshoot nor oscillate. About the current velocity
+//! `q̇ = (v − v_water, ω)`, the damping wrench `W = (F, τ)` of the model is linearised as
+//! `W − α·M·Δq̇`, with `M` the body's mass and inertia and `α = √(W·M⁻¹W / q̇·M·q̇)` (1/s), and
+//! taken at the end of the step, given the step's other forces `G` (buoyancy, gravity, the
+//! application's own forces; not contacts or joints):
+//!
+//! ```text
+//! W' = (W − α·dt·G) / (1 + α·dt)
+//! ```
+//!
+//! When buoyancy, weight and the application's forces balance (`G = 0`), `W'` is `W` scaled by
+//! one factor, so its line of action stays. A body moving freely reaches the terminal velocity of
+//! the damping model (where `W = −G`). Gravity is taken as the water's (`g` against its normal,
+//! times the body's gravity scale). A body whose pose, velocity or result is not finite gets no
+//! force (the previous one is taken back); its report's outcome is [`Outcome::NotFinite`].
+//!
+//! # Bodies of several parts
+//! Buoyancy and pressure drag add up over the parts. The angular damping,
+//! `−f·ρ·V^{5/3}·(a₁ + a₂|ω|)·ω` ([`angular_damping`](crate::damping::angular_damping)), is
+//! the whole body's, with `V` the total volume of the parts and `f` their total wetted area
+//! over their total surface area, so that splitting a shape into parts does not change it.
+//!
+//! # Frames and units
+//! World frame, SI units; a part's mesh is in its shape's frame, placed on the body by
+//! [`Part::shape_to_body`]; torques about the body's center of mass. Computed in `f64`, applied
+//! in `f32`.
+//!
+//! ```
+//! use buoyancy_core::controller::{BodyOptions, BodyState, Command, Controller, Motion, Part};
+//! use buoyancy_core::nalgebra::{Matrix3, Point3, Vector3};
+//! use buoyancy_core::{shape, Mesh, Pose};
+//!
+//! // A 1 m cube of 500 kg, its center at the water level (half under water), at rest.
+//! let (v, t) = shape::cube::<f64>(1)?;
+//! let part = Part { mesh: Mesh::new(v, t)?, shape_to_body: Pose::identity() };
+//! let mut controller = Controller::default();
+//! let cube = controller.add(vec![part], BodyOptions::default())?;
+//! let state = BodyState {
+//!     pose: Pose::identity(),
+//!     center_of_mass: Point3::origin(),
+//!     linear_velocity: Vector3::zeros(),
+//!     angular_velocity: Vector3::zeros(),
+//!     mass: 500.0,
+//!     inverse_mass: Vector3::repeat(1.0 / 500.0),
+//!     inverse_inertia: Matrix3::identity() * (6.0 / 500.0),
+//!     gravity_scale: 1.0,
+//!     applied_force: Vector3::zeros(),
+//!     applied_torque: Vector3::zeros(),
+//!     motion: Motion::Dynamic,
+//!     sleeping: false,
+//! };
+//! let mut commands = [Command::default()];
+//! controller.step(&[state], 1.0 / 60.0, &mut commands);
+//! // Add this to the engine's force: the buoyancy of half the cube, 4905 N up.
+//! assert!((commands[0].add_force.y - 4905.0).abs() < 0.01);
+//! assert_eq!(controller.report(cube).unwrap().submerged_volume, 0.5);
+//! # Ok::<(), buoyancy_core::Error>(())
+//! ```
+
+mod body;
+mod evaluation;
+mod report;
+mod semi_implicit;
+mod settings;
+mod share;
+mod state;
+mod wrench;
+
+use alloc::vec::Vec;
+
+pub use body::Part;
+pub use report::{FloatReport, Outcome};
+pub use settings::{BodyOptions, Settings};
+pub use state::{BodyState, Command, Motion};
+
+use body::FloatingBody;
+use evaluation::{Evaluation, evaluate};
+
+use crate::Error;
+
+/// The bodies that float, their settings, and the books of what was applied to them (see the
+/// [module documentation](self)). Bodies are numbered from 0 in the order they were added;
+/// [`remove`](Controller::remove) moves the last one into the freed number.
+#[derive(Debug, Clone, Default)]
+pub struct Controller {
+    settings: Settings,
+    bodies: Vec<FloatingBody>,
+}
+
+impl Controller {
+    /// No bodies, these settings.
+    pub fn new(settings: Settings) -> Self {
+        Controller {
+            settings,
+            bodies: Vec::new(),
+        }
+    }
+
+    /// The controller's settings (a body's [`BodyOptions`] override them).
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// The controller's settings, to change.
+    pub fn settings_mut(&mut self) -> &mut Settings {
+        &mut self.settings
+    }
+
+    /// Number of bodies.
+    pub fn len(&self) -> usize {
+        self.bodies.len()
+    }
+
+    /// Whether there is no body.
+    pub fn is_empty(&self) -> bool {
+        self.bodies.is_empty()
+    }
+
+    /// Adds a body made of `parts`, with `options`; returns its number (the count of bodies
+    /// before it).
+    ///
+    /// # Errors
+    /// [`Error::EmptyBody`] for no parts.
+    pub fn add(&mut self, parts: Vec<Part>, options: BodyOptions) -> Result<usize, Error> {
+        self.bodies.push(FloatingBody::new(parts, options)?);
+        Ok(self.bodies.len() - 1)
+    }
+
+    /// Replaces the parts and options of body `index`, keeping the books of what was applied
+    /// to it. Returns `Ok(false)` when there is no such body.
+    ///
+    /// # Errors
+    /// [`Error::EmptyBody`] for no parts.
+    pub fn replace(
+        &mut self,
+        index: usize,
+        parts: Vec<Part>,
+        options: BodyOptions,
+    ) -> Result<bool, Error> {
+        let replacement = FloatingBody::new(parts, options)?;
+        let Some(body) = self.bodies.get_mut(index) else {
+            return Ok(false);
+        };
+        *body = FloatingBody {
+            share: body.share,
+            report: body.report,
+            ..replacement
+        };
+        Ok(true)
+    }
+
+    /// Removes body `index` (the last body takes its number) and returns the command that
+    /// takes its share back off it; `None` when there is no such body. The engine must apply
+    /// the command even to a body it does not move by forces (the share is there).
+    pub fn remove(&mut self, index: usize) -> Option<Command> {
+        (index < self.bodies.len()).then(|| self.bodies.swap_remove(index).share.take_back())
+    }
+
+    /// Tells the controller that the forces and torques of body `index` were reset in the
+    /// engine, so that its share is zero now; the next step adds the whole share again.
+    pub fn forget_applied(&mut self, index: usize) {
+        if let Some(body) = self.bodies.get_mut(index) {
+            body.share.forget();
+        }
+    }
+
+    /// What the last [`step`](Self::step) computed and applied for body `index`.
+    pub fn report(&self, index: usize) -> Option<&FloatReport> {
+        self.bodies.get(index).map(|b| &b.report)
+    }
+
+    /// The parts of body `index`.
+    pub fn parts(&self, index: usize) -> Option<&[Part]> {
+        self.bodies.get(index).map(|b| b.parts.as_slice())
+    }
+
+    /// The settings of body `index`: the controller's, with the body's overrides.
+    pub fn body_settings(&self, index: usize) -> Option<Settings> {
+        self.bodies
+            .get(index)
+            .map(|b| self.settings.resolve(&b.options))
+    }
+
+    /// One step of `dt` seconds: for every body `i`, its buoyancy and damping in `states[i]`,
+    /// and in `commands[i]` what to add to the engine's force and torque for it (see the
+    /// [module documentation](self)). With the `rayon` feature the bodies are computed in
+    /// parallel. No allocation.
+    ///
+    /// # Panics
+    /// When `states` or `commands` do not have one entry per body: an adapter's bug, not a
+    /// user's input.
+    pub fn step(&mut self, states: &[BodyState], dt: f64, commands: &mut [Command]) {
+        assert!(
+            states.len() == self.bodies.len() && commands.len() == self.bodies.len(),
+            "Controller::step: {} states and {} commands for {} bodies",
+            states.len(),
+            commands.len(),
+            self.bodies.len()
+        );
+        let settings = &self.settings;
+        let one = |(body, (state, command)): (&mut FloatingBody, (&BodyState, &mut Command))| {
+            body.share.forget_if_wiped(state);
+            let resolved = settings.resolve(&body.options);
+            let evaluation = evaluate(body, state, &resolved, dt);
+            body.report = evaluation.report(state.center_of_mass);
+            *command = match evaluation {
+                Evaluation::Inactive => Command::default(),
+                Evaluation::NotFinite => body.share.hold(
+                    state,
+                    nalgebra::Vector3::zeros(),
+                    nalgebra::Vector3::zeros(),
+                    resolved.water.gravity() as f32,
+                    body.size() as f32,
+                ),
+                Evaluation::Floating { force, torque, .. } => body.share.hold(
+                    state,
+                    force,
+                    torque,
+                    resolved.water.gravity() as f32,
+                    body.size() as f32,
+                ),
+            };
+        };
+        #[cfg(feature = "rayon")]
+        {
+            use rayon::prelude::*;
+            self.bodies
+                .par_iter_mut()
+                .zip(states.par_iter().zip(commands.par_iter_mut()))
+                .for_each(one);
+        }
+        #[cfg(not(feature = "rayon"))]
+        self.bodies
+            .iter_mut()
+            .zip(states.iter().zip(commands.iter_mut()))
+            .for_each(one);
+    }
+}
