@@ -516,8 +516,6 @@ mod tests {
     use super::*;
     use crate::shape;
     use crate::waves::{AiryComponent, AiryWaves, CalmSurface, HeightGrid, SurfaceFn};
-    use alloc::vec;
-    use alloc::vec::Vec;
     use nalgebra::{Point3, Translation3, UnitQuaternion};
 
     fn mesh(shape: Result<shape::Shape<f64>, Error>) -> Mesh<f64> {
@@ -639,6 +637,8 @@ mod tests {
     #[cfg(feature = "rayon")]
     #[test]
     fn parallel_walk_is_bit_identical() {
+        use alloc::vec;
+        use alloc::vec::Vec;
         let mesh = mesh(shape::torus(1.0, 0.4, 400, 60));
         let airy = AiryWaves::new(
             vec![AiryComponent {
