@@ -14,9 +14,57 @@
 //!
 //! The wetted surface is the hydrostatic one (each triangle cut where the depth below the
 //! surface, interpolated from its vertices, is zero; see `wave_pressure`), and the pressure is
-//! integrated over each wetted piece by the degree-5, 7-point rule of Dunavant: exact for
-//! polynomials of degree 5 over a piece; for a wave of number `k` over a piece of size `L` its
-//! error falls as `(k·L)⁶`.
+//! integrated over each wetted piece by the degree-5, 7-point rule of Dunavant, exact for
+//! polynomials of degree 5 over a piece.
+//!
+//! # Quadrature error
+//! Measured against a reference that integrates the same wetted pieces with the same pressure
+//! on `4³ = 64` congruent sub-triangles each (the same rule on each), so that the two differ
+//! only by quadrature; the cut (the waterline interpolated between vertices) and the faceting
+//! are not part of this error. Over 240 random poses (the body cut by the surface or submerged,
+//! holding at least 5 % of its volume's weight) of a UV sphere (radius 0.5 m, 32×16), a torus
+//! (0.6/0.25 m, 32×12) and a unit cube (`n = 4`) in five Airy seas (a long swell, `a` 0.5 m,
+//! `λ` 25 m; a moderate sea over 3 m of water, 0.2 m at 4 m and 0.1 m at 6 m; a short steep
+//! wave, 0.06 m at 1 m, `k·a` 0.38; a shallow sea, 0.12 m at 2.5 m over 1.2 m of water; five
+//! components from 0.15 m at 8 m to 0.025 m at 1.1 m in deep water, spread in direction), the
+//! error in force relative to `|F|` and in torque relative to `|F|·R` (`R` the mesh's bounding
+//! radius) are:
+//!
+//! ```text
+//! sea                    k·L          force: worst  median     torque: worst  median
+//! long, deep             0.03–0.09    1.2e-5        ≤ 1.7e-6   1.5e-5         ≤ 1.2e-7
+//! moderate, depth 3 m    0.22–0.56    1.1e-4        ≤ 3.7e-6   4.5e-5         ≤ 2.8e-6
+//! short steep, deep      0.87–2.22    5.8e-5        ≤ 1.6e-5   1.3e-5         ≤ 6.3e-6
+//! shallow, depth 1.2 m   0.35–0.89    1.2e-4        ≤ 1.5e-5   4.2e-5         ≤ 7.0e-6
+//! 5 components, deep     0.79–2.02    8.5e-5        ≤ 2.4e-5   3.3e-5         ≤ 1.5e-5
+//! ```
+//!
+//! (`k` the largest wavenumber, `L` the mesh's longest edge; the medians are the largest of the
+//! three meshes'.) The test asserts a relative error in force below **1e-3** and in torque below
+//! **3e-4** `·|F|·R` over these poses; the one-point (centroid) rule fails both (3.6e-3 and
+//! 7.6e-3), and the reference moves by less than 6e-6 from 16 to 64 sub-triangles a piece
+//! (its own error is smaller still). The per-mesh table is printed by
+//!
+//! ```text
+//! cargo test -p buoyancy-core --lib froude_krylov -- --nocapture
+//! ```
+//!
+//! What the error depends on:
+//! * Where the pressure is smooth over a piece (a piece wholly below or wholly above the still
+//!   plane) the rule's error is of order `(k·L)⁶` relative to the wave part, `L` the size of the
+//!   piece: measured once with `P` made smooth across the still plane (`e^{kz}` above it too),
+//!   1e-9 to 2e-7 on these meshes, falling by about 2⁷ when `L` halves.
+//! * The figures above are dominated by the still plane: the wave part's vertical derivative
+//!   jumps there, from `a·P′(0)·cos θ` (`k·a·cos θ` in deep water) below to zero above (the
+//!   crest's hydrostatic extrapolation), so on a piece that straddles the still plane under a
+//!   crest the pressure is only continuous, and the rule's error on it is of order `k·a·L` times
+//!   its area instead of `(k·L)⁶`. Summed over the pieces along the waterline, the error grows
+//!   with the slope `k·a` and is of second order in `L`: halving `L` (sphere 32×16 → 64×32 →
+//!   128×64, cube `n` 4 → 8 → 16, the same 24 poses per sea) divided the RMS error by 3 to 13,
+//!   about 5 on average. This is why a long swell (`k·L` 0.03) still shows 1e-5 at worst, while
+//!   its poses where no wetted piece reaches the still plane are at round-off.
+//! * Clipping the pressure at zero contributes nothing measurable: removing the clip left every
+//!   figure unchanged.
 
 use nalgebra::{Point3, Vector3};
 
@@ -142,14 +190,13 @@ impl<T: Real> Sea<T> {
     /// The pressure, in units of `ρ·g`, at a point of height `z` above the still plane and
     /// horizontal position `q` at `time` (see the module documentation).
     fn pressure(&self, q: &Point3<T>, z: T, time: T) -> T {
-        let mode = std::env::var("FKMODE").unwrap_or_default();
-        let below = if mode.contains('s') { z } else { z.min(T::zero()) };
+        let below = z.min(T::zero());
         let wave = self.waves.iter().fold(T::zero(), |sum, w| {
             sum + w.amplitude
                 * pressure_ratio(w.wavenumber, below, self.depth)
                 * w.phase_at(&q.coords, time).cos()
         });
-        if mode.contains('c') { wave - z } else { (wave - z).max(T::zero()) }
+        (wave - z).max(T::zero())
     }
 }
 
@@ -268,9 +315,9 @@ mod tests {
     use super::*;
     use crate::shape;
     use crate::waves::AiryComponent;
+    use alloc::string::String;
     use alloc::vec;
     use alloc::vec::Vec;
-    use alloc::string::String;
     use nalgebra::{Translation3, UnitQuaternion};
 
     /// xorshift64*: a deterministic stream of uniforms in `[0, 1)`.
@@ -301,7 +348,10 @@ mod tests {
     fn seas() -> Vec<(&'static str, AiryWaves<f64>)> {
         let sea = |components, depth| AiryWaves::new(components, depth).unwrap();
         vec![
-            ("long, deep", sea(vec![component(0.5, 25.0, 0.3, 0.0)], None)),
+            (
+                "long, deep",
+                sea(vec![component(0.5, 25.0, 0.3, 0.0)], None),
+            ),
             (
                 "moderate, depth 3 m",
                 sea(
@@ -309,7 +359,10 @@ mod tests {
                     Some(3.0),
                 ),
             ),
-            ("short steep, deep", sea(vec![component(0.06, 1.0, 0.7, 1.0)], None)),
+            (
+                "short steep, deep",
+                sea(vec![component(0.06, 1.0, 0.7, 1.0)], None),
+            ),
             (
                 "shallow, depth 1.2 m",
                 sea(vec![component(0.12, 2.5, -0.4, 0.2)], Some(1.2)),
@@ -337,10 +390,11 @@ mod tests {
         };
         vec![
             ("sphere r 0.5, 32×16", mesh(shape::uv_sphere(0.5, 32, 16))),
-            ("sphere r 0.5, 64×32", mesh(shape::uv_sphere(0.5, 64, 32))),
-            ("torus 0.6/0.25, 32×12", mesh(shape::torus(0.6, 0.25, 32, 12))),
+            (
+                "torus 0.6/0.25, 32×12",
+                mesh(shape::torus(0.6, 0.25, 32, 12)),
+            ),
             ("cube 1 m, n 4", mesh(shape::cube(4))),
-            ("cube 1 m, n 8", mesh(shape::cube(8))),
         ]
     }
 
@@ -350,12 +404,24 @@ mod tests {
         (errors[errors.len() - 1], errors[errors.len() / 2])
     }
 
+    /// The bound on the relative error in force stated in the module documentation.
+    const FORCE_BOUND: f64 = 1e-3;
+    /// The bound on the error in torque relative to `|F|·R` stated in the module documentation.
+    const TORQUE_BOUND: f64 = 3e-4;
+
+    /// The production rule against the same pieces and pressure integrated on `4³ = 64`
+    /// sub-triangles each; prints the table of the module documentation.
     #[test]
     fn the_quadrature_error_against_a_subdivided_reference() {
         let water = Water::default();
         let mut random = Random(0x9e37_79b9_7f4a_7c15);
-        let poses = 12;
-        let mut table = String::new();
+        let poses = 16;
+        let (mut worst_force, mut worst_torque) = (0.0f64, 0.0f64);
+        let (mut worst_centroid, mut worst_reference) = ((0.0f64, 0.0f64), 0.0f64);
+        let mut table = String::from(concat!(
+            "sea                   mesh                     kL   force: worst  median",
+            "  torque: worst  median  centroid: force  torque  reference\n",
+        ));
         for (sea_name, waves) in seas() {
             let k = waves
                 .components()
@@ -364,13 +430,14 @@ mod tests {
                 .fold(0.0, f64::max);
             for (mesh_name, mesh) in meshes() {
                 let size = mesh.bounding_radius();
+                let wet = 0.05 * water.specific_weight() * mesh.volume();
                 let (mut force, mut torque) = (Vec::new(), Vec::new());
-                let (mut centroid, mut reference) = (Vec::new(), Vec::new());
-                for _ in 0..poses {
+                let (mut centroid, mut reference) = ((0.0f64, 0.0f64), 0.0f64);
+                while force.len() < poses {
                     let pose = Pose::from_parts(
                         Translation3::new(
                             random.between(-5.0, 5.0),
-                            random.between(-0.8, 0.5),
+                            random.between(-0.7, 0.4),
                             random.between(-5.0, 5.0),
                         ),
                         UnitQuaternion::from_euler_angles(
@@ -384,36 +451,72 @@ mod tests {
                         mesh.froude_krylov_by(&pose, &water, &waves, time, &Subdivided { levels })
                             .unwrap()
                     };
-                    let (exact, coarser) = (by(3), by(2));
-                    let got = mesh.buoyancy_froude_krylov(&pose, &water, &waves, time).unwrap();
-                    let one = mesh
-                        .froude_krylov_by(&pose, &water, &waves, time, &Centroid)
-                        .unwrap();
+                    let exact = by(3);
                     let scale = exact.force.norm();
+                    if scale < wet {
+                        // Barely wet: the relative error is not the quadrature's.
+                        continue;
+                    }
                     let errors = |b: &Buoyancy<f64>| {
                         (
                             (b.force - exact.force).norm() / scale,
                             (b.torque - exact.torque).norm() / (scale * size),
                         )
                     };
-                    let (f, t) = errors(&got);
+                    let (f, t) = errors(
+                        &mesh
+                            .buoyancy_froude_krylov(&pose, &water, &waves, time)
+                            .unwrap(),
+                    );
                     force.push(f);
                     torque.push(t);
-                    centroid.push(errors(&one).0);
-                    let (f, t) = errors(&coarser);
-                    reference.push(f.max(t));
+                    let (f, t) = errors(
+                        &mesh
+                            .froude_krylov_by(&pose, &water, &waves, time, &Centroid)
+                            .unwrap(),
+                    );
+                    centroid = (centroid.0.max(f), centroid.1.max(t));
+                    // The reference's own error is below its change from 16 sub-triangles.
+                    let (f, t) = errors(&by(2));
+                    reference = reference.max(f.max(t));
                 }
                 let (force_worst, force_median) = worst_and_median(&mut force);
                 let (torque_worst, torque_median) = worst_and_median(&mut torque);
-                let (centroid_worst, centroid_median) = worst_and_median(&mut centroid);
-                let (reference_worst, _) = worst_and_median(&mut reference);
+                worst_force = worst_force.max(force_worst);
+                worst_torque = worst_torque.max(torque_worst);
+                worst_centroid = (
+                    worst_centroid.0.max(centroid.0),
+                    worst_centroid.1.max(centroid.1),
+                );
+                worst_reference = worst_reference.max(reference);
                 let edge = k * mesh.longest_edge;
                 table += &alloc::format!(
-                    "{sea_name:<22} {mesh_name:<22} kL {edge:5.2}  force {force_worst:8.1e} {force_median:8.1e}  torque {torque_worst:8.1e} {torque_median:8.1e}  centroid {centroid_worst:8.1e} {centroid_median:8.1e}  reference {reference_worst:8.1e}\n"
+                    "{sea_name:<21} {mesh_name:<22} {edge:5.2} {force_worst:13.1e} {:7.1e}",
+                    force_median,
+                );
+                table += &alloc::format!(
+                    " {torque_worst:14.1e} {torque_median:7.1e} {:15.1e} {:7.1e} {:10.1e}\n",
+                    centroid.0,
+                    centroid.1,
+                    reference,
                 );
             }
         }
         #[cfg(feature = "std")]
         std::println!("{table}");
+        assert!(worst_force < FORCE_BOUND, "force: {worst_force:e}\n{table}");
+        assert!(
+            worst_torque < TORQUE_BOUND,
+            "torque: {worst_torque:e}\n{table}"
+        );
+        // The reference is converged far below the bounds, and the bounds reject a degree-1 rule.
+        assert!(
+            worst_reference < TORQUE_BOUND / 20.0,
+            "reference: {worst_reference:e}\n{table}"
+        );
+        assert!(
+            worst_centroid.0 > FORCE_BOUND && worst_centroid.1 > TORQUE_BOUND,
+            "centroid: {worst_centroid:?}\n{table}"
+        );
     }
 }
