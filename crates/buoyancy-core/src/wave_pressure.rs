@@ -8,7 +8,7 @@
 //! vertices, once per vertex per evaluation), the triangle is cut exactly where `h = 0` (both
 //! triangles of an edge cut it at the same point: no gaps, no overlaps), and the hydrostatic
 //! pressure `p = −ρ·g·h ≥ 0` is integrated in closed form over the part under water, force and
-//! moment, as [`Method::ExactSurface`](crate::Method::ExactSurface) does under still water:
+//! moment, as [`Method::ExactSurface`] does under still water:
 //!
 //! ```text
 //! F = −∫ p n̂ dA,    τ = −∫ (r − c) × p n̂ dA   over the wetted surface.
@@ -61,7 +61,7 @@ impl<T: Real> Mesh<T> {
     /// `b` of it, and sums the rest through per-vertex coefficients (see [the
     /// walk](crate::wave_pressure#the-walk)). The surface is evaluated once per vertex that may
     /// be wet, in one call for up to 16,384 vertices. A calm surface (`b = 0`) is
-    /// [`Method::ExactSurface`](crate::Method::ExactSurface) on the hierarchy. It allocates a
+    /// [`Method::ExactSurface`] on the hierarchy. It allocates a
     /// number per vertex and a point per vertex that may be wet.
     ///
     /// ```

@@ -3,7 +3,7 @@
 use std::collections::HashMap;
 
 use buoyancy_core::controller::{
-    BodyOptions, BodyState, Command, Controller, FloatReport, Motion, Settings,
+    BodyOptions, BodyState, Command, Controller, FloatReport, Motion, Settings, SharedSurface,
 };
 use buoyancy_core::nalgebra::Matrix3;
 use buoyancy_core::{DampingCoefficients, Mesh, Method, Pose, Water};
@@ -90,6 +90,25 @@ impl FloatingBodies {
     /// Sets the world's damping coefficients ([`DampingCoefficients::off`] for none).
     pub fn set_damping(&mut self, damping: DampingCoefficients<f64>) {
         self.controller.settings_mut().damping = damping;
+    }
+
+    /// The moving free surface the bodies float on, if any (see the core's
+    /// [controller](buoyancy_core::controller#waves)).
+    pub fn surface(&self) -> Option<&SharedSurface> {
+        self.controller.surface()
+    }
+    /// Makes the bodies float on `surface`, e.g. `Some(Arc::new(airy_waves))`, or on still water
+    /// with `None`. Its time advances with every [`apply`](Self::apply) by the step's `dt`.
+    pub fn set_surface(&mut self, surface: Option<SharedSurface>) {
+        self.controller.set_surface(surface);
+    }
+    /// The surface's time, s.
+    pub fn time(&self) -> f64 {
+        self.controller.time()
+    }
+    /// Sets the surface's time, s.
+    pub fn set_time(&mut self, time: f64) {
+        self.controller.set_time(time);
     }
 
     /// Number of registered bodies.
@@ -199,9 +218,11 @@ impl FloatingBodies {
     /// are forgotten. Fixed, kinematic and disabled bodies get nothing new: their share is left
     /// as it is (rapier ignores `add_force` on bodies that are not dynamic but keeps their stored
     /// force), and holds again when they are dynamic and enabled again. With the `rayon` feature
-    /// the bodies are computed in parallel.
+    /// the bodies are computed in parallel. On a moving [surface](Self::set_surface), the
+    /// bodies are evaluated at the surface's [time](Self::time), which then advances by `dt`.
     ///
-    /// No allocation once every body has been seen (the meshes are prepared at registration).
+    /// Under still water, no allocation once every body has been seen (the meshes are prepared
+    /// at registration); on waves, each part's evaluation allocates its buffers.
     pub fn apply(&mut self, bodies: &mut RigidBodySet, dt: f32) {
         self.forget_removed(bodies);
         self.states.clear();

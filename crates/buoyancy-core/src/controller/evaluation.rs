@@ -10,6 +10,14 @@ use super::settings::Settings;
 use super::state::{BodyState, Motion};
 use super::wrench::Wrench;
 use crate::damping::angular_damping;
+use crate::waves::WaterSurface;
+
+/// A moving free surface at the time of a step.
+#[derive(Clone, Copy)]
+pub(crate) struct Sea<'a> {
+    pub surface: &'a (dyn WaterSurface<f64> + Send),
+    pub time: f64,
+}
 
 /// What evaluating one body at one step gives.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -47,12 +55,28 @@ pub(crate) fn evaluate(
     body: &FloatingBody,
     state: &BodyState,
     settings: &Settings,
+    sea: Option<Sea>,
     dt: f64,
 ) -> Evaluation {
     if state.motion != Motion::Dynamic {
         return Evaluation::Inactive;
     }
-    let Some(mut report) = sum_parts(body, state, settings) else {
+    // The damping relative to the water: its current, plus the waves' orbital velocity at the
+    // center of mass.
+    let mut settings = *settings;
+    if let Some(sea) = sea
+        && let Some(orbital) =
+            sea.surface
+                .water_velocity(&settings.water, &state.center_of_mass, sea.time)
+    {
+        let current = settings.damping.current() + orbital;
+        match settings.damping.with_current(current) {
+            Ok(damping) => settings.damping = damping,
+            Err(_) => return Evaluation::NotFinite,
+        }
+    }
+    let settings = &settings;
+    let Some(mut report) = sum_parts(body, state, settings, sea) else {
         return Evaluation::NotFinite;
     };
     let water = &settings.water;
@@ -96,7 +120,12 @@ pub(crate) fn evaluate(
 /// world center of mass, the pressure drag of each part and the angular damping of the whole
 /// body ([`angular_damping`] with the parts' total wetted fraction and volume). `None` when the
 /// core rejects a pose or velocity (not finite).
-fn sum_parts(body: &FloatingBody, state: &BodyState, settings: &Settings) -> Option<FloatReport> {
+fn sum_parts(
+    body: &FloatingBody,
+    state: &BodyState,
+    settings: &Settings,
+    sea: Option<Sea>,
+) -> Option<FloatReport> {
     let Settings {
         water,
         method,
@@ -112,7 +141,13 @@ fn sum_parts(body: &FloatingBody, state: &BodyState, settings: &Settings) -> Opt
     let mut weighted_center = Vector3::zeros();
     for part in &body.parts {
         let pose = state.pose * part.shape_to_body;
-        let buoyancy = part.mesh.buoyancy(&pose, water, *method).ok()?;
+        let buoyancy = match sea {
+            Some(sea) => part
+                .mesh
+                .buoyancy_in_waves(&pose, water, sea.surface, sea.time),
+            None => part.mesh.buoyancy(&pose, water, *method),
+        }
+        .ok()?;
         // The core takes the velocity of the mesh's own centroid.
         let centroid_velocity = velocity + omega.cross(&(buoyancy.torque_point - center_of_mass));
         let drag = part

@@ -57,6 +57,16 @@
 //! the whole body's, with `V` the total volume of the parts and `f` their total wetted area
 //! over their total surface area, so that splitting a shape into parts does not change it.
 //!
+//! # Waves
+//! With a moving free surface ([`Controller::set_surface`], any [`WaterSurface`]), the buoyancy
+//! is the hydrostatic pressure of the waves integrated over each part's wetted surface
+//! ([`Mesh::buoyancy_in_waves`](crate::Mesh::buoyancy_in_waves); the method of the settings is
+//! for still water), at the controller's [`time`](Controller::time), which every step advances
+//! by its `dt`. The damping is taken relative to the water: its current plus the surface's
+//! [`water_velocity`](WaterSurface::water_velocity) (the orbital velocity of Airy waves) at the
+//! body's center of mass, one velocity for the whole body (a body small against the
+//! wavelength).
+//!
 //! # Frames and units
 //! World frame, SI units; a part's mesh is in its shape's frame, placed on the body by
 //! [`Part::shape_to_body`]; torques about the body's center of mass. Computed in `f64`, applied
@@ -103,6 +113,7 @@ mod share;
 mod state;
 mod wrench;
 
+use alloc::sync::Arc;
 use alloc::vec::Vec;
 
 pub use body::Part;
@@ -111,26 +122,68 @@ pub use settings::{BodyOptions, Settings};
 pub use state::{BodyState, Command, Motion};
 
 use body::FloatingBody;
-use evaluation::{Evaluation, evaluate};
+use evaluation::{Evaluation, Sea, evaluate};
 
 use crate::Error;
+use crate::waves::WaterSurface;
+
+/// A free surface shared with the controller (see [`Controller::set_surface`]): any
+/// [`WaterSurface`], e.g. `Arc::new(airy_waves)`.
+pub type SharedSurface = Arc<dyn WaterSurface<f64> + Send>;
 
 /// The bodies that float, their settings, and the books of what was applied to them (see the
 /// [module documentation](self)). Bodies are numbered from 0 in the order they were added;
 /// [`remove`](Controller::remove) moves the last one into the freed number.
-#[derive(Debug, Clone, Default)]
+#[derive(Clone, Default)]
 pub struct Controller {
     settings: Settings,
     bodies: Vec<FloatingBody>,
+    /// The moving free surface, if any, and its time.
+    surface: Option<SharedSurface>,
+    time: f64,
+}
+
+impl core::fmt::Debug for Controller {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Controller")
+            .field("settings", &self.settings)
+            .field("bodies", &self.bodies)
+            .field("waves", &self.surface.is_some())
+            .field("time", &self.time)
+            .finish()
+    }
 }
 
 impl Controller {
-    /// No bodies, these settings.
+    /// No bodies, these settings, still water at time 0.
     pub fn new(settings: Settings) -> Self {
         Controller {
             settings,
             bodies: Vec::new(),
+            surface: None,
+            time: 0.0,
         }
+    }
+
+    /// The moving free surface the bodies float on, if any.
+    pub fn surface(&self) -> Option<&SharedSurface> {
+        self.surface.as_ref()
+    }
+
+    /// Makes the bodies float on `surface` (see [waves](self#waves)), or on still water with
+    /// `None`.
+    pub fn set_surface(&mut self, surface: Option<SharedSurface>) {
+        self.surface = surface;
+    }
+
+    /// The surface's time, s: advanced by `dt` at every [`step`](Self::step).
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// Sets the surface's time, s.
+    pub fn set_time(&mut self, time: f64) {
+        self.time = time;
     }
 
     /// The controller's settings (a body's [`BodyOptions`] override them).
@@ -235,10 +288,14 @@ impl Controller {
             self.bodies.len()
         );
         let settings = &self.settings;
+        let sea = self.surface.as_deref().map(|surface| Sea {
+            surface,
+            time: self.time,
+        });
         let one = |(body, (state, command)): (&mut FloatingBody, (&BodyState, &mut Command))| {
             body.share.forget_if_wiped(state);
             let resolved = settings.resolve(&body.options);
-            let evaluation = evaluate(body, state, &resolved, dt);
+            let evaluation = evaluate(body, state, &resolved, sea, dt);
             body.report = evaluation.report(state.center_of_mass);
             *command = match evaluation {
                 Evaluation::Inactive => Command::default(),
@@ -271,5 +328,6 @@ impl Controller {
             .iter_mut()
             .zip(states.iter().zip(commands.iter_mut()))
             .for_each(one);
+        self.time += dt;
     }
 }

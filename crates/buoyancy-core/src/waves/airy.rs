@@ -265,6 +265,13 @@ impl<T: Real> WaterSurface<T> for AiryWaves<T> {
     fn elevation_bound(&self) -> Option<T> {
         Some(amplitude_sum(&self.components))
     }
+
+    /// The orbital velocity of [`AiryWaves::water_motion`].
+    fn water_velocity(&self, water: &Water<T>, point: &Point3<T>, time: T) -> Option<Vector3<T>> {
+        self.water_motion(water, point, time)
+            .ok()
+            .map(|motion| motion.velocity)
+    }
 }
 
 #[cfg(test)]

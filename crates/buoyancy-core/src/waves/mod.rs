@@ -67,6 +67,15 @@ pub trait WaterSurface<T: Real>: Sync {
     fn elevation_bound(&self) -> Option<T> {
         None
     }
+
+    /// The velocity of the water at the world point `point` at `time` (m/s, world frame), if
+    /// the surface models it: what a floating body's damping is taken relative to (see
+    /// [`controller`](crate::controller)). `None` (the default): the water does not move with
+    /// this surface. [`AiryWaves`] give their orbital velocity.
+    fn water_velocity(&self, water: &Water<T>, point: &Point3<T>, time: T) -> Option<Vector3<T>> {
+        let _ = (water, point, time);
+        None
+    }
 }
 
 /// Still water: `η = 0` everywhere, at all times.
