@@ -1,11 +1,12 @@
 """Type stubs of the compiled module ``buoyancy._core`` (re-exported by ``buoyancy``)."""
 
 import os
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from typing import Final, Literal, Protocol, SupportsIndex, TypeAlias, final, overload
 
 import numpy as np
 import numpy.typing as npt
+from typing_extensions import deprecated
 
 # The canonical names; any case, with "_", "-" or nothing between the words, is accepted too
 # ("ExactSurface", "exact-surface").
@@ -21,6 +22,12 @@ _DefectKind: TypeAlias = Literal[
     "inconsistent_orientation",
 ]
 _FloatArray: TypeAlias = npt.NDArray[np.float64]
+_Float32Array: TypeAlias = npt.NDArray[np.float32]
+_BoolArray: TypeAlias = npt.NDArray[np.bool_]
+_Outcome: TypeAlias = Literal["not_evaluated", "applied", "inactive", "not_finite"]
+# A part of a floating body: a mesh in the body's frame, or (mesh, position, quaternion) of a mesh
+# in its own frame placed on the body.
+_Part: TypeAlias = Mesh | tuple[Mesh, npt.ArrayLike, npt.ArrayLike]
 _IntArray: TypeAlias = npt.NDArray[np.int64]
 # A vectorised surface: the (N, 3) still-plane points and the time (s) to N elevations (m).
 _SurfaceFunction: TypeAlias = Callable[[_FloatArray, float], npt.ArrayLike]
@@ -33,8 +40,10 @@ __all__ = [
     "AiryWave",
     "Buoyancy",
     "BuoyancyBatch",
+    "Controller",
     "Damping",
     "DampingCoefficients",
+    "FloatReport",
     "GerstnerWaves",
     "HeightGrid",
     "Mesh",
@@ -464,6 +473,147 @@ class Mesh:
     def __eq__(self, other: object, /) -> bool: ...
     def __hash__(self) -> int: ...
     def __reduce__(self) -> tuple[type[Mesh], tuple[_FloatArray, _IntArray]]: ...
+
+@final
+class FloatReport:
+    """What ``Controller.step`` computed and applied for one body, world frame, SI units."""
+
+    def __new__(
+        cls,
+        submerged_volume: float = 0.0,
+        center_of_buoyancy: npt.ArrayLike | None = (0, 0, 0),
+        center_of_mass: npt.ArrayLike | None = (0, 0, 0),
+        buoyancy_force: npt.ArrayLike | None = (0, 0, 0),
+        buoyancy_torque: npt.ArrayLike | None = (0, 0, 0),
+        damping_force: npt.ArrayLike | None = (0, 0, 0),
+        damping_torque: npt.ArrayLike | None = (0, 0, 0),
+        wetted_area: float = 0.0,
+        outcome: _Outcome = "not_evaluated",
+    ) -> FloatReport: ...
+    @property
+    def submerged_volume(self) -> float:
+        """Volume under water, m³."""
+    @property
+    def center_of_buoyancy(self) -> _FloatArray:
+        """Center of buoyancy, m, shape (3,)."""
+    @property
+    def center_of_mass(self) -> _FloatArray:
+        """The body's world center of mass, m, shape (3,)."""
+    @property
+    def buoyancy_force(self) -> _FloatArray:
+        """Buoyant force, N, shape (3,)."""
+    @property
+    def buoyancy_torque(self) -> _FloatArray:
+        """Torque of the buoyancy about the center of mass, N·m, shape (3,)."""
+    @property
+    def damping_force(self) -> _FloatArray:
+        """Damping force as applied (semi-implicit), N, shape (3,)."""
+    @property
+    def damping_torque(self) -> _FloatArray:
+        """Damping torque as applied, N·m, shape (3,)."""
+    @property
+    def wetted_area(self) -> float:
+        """Area of the surface under water, m²."""
+    @property
+    def outcome(self) -> _Outcome:
+        """What became of the body at the last step."""
+    @property
+    def force(self) -> _FloatArray:
+        """``buoyancy_force + damping_force``, N, shape (3,)."""
+    @property
+    def torque(self) -> _FloatArray:
+        """``buoyancy_torque + damping_torque``, N·m, shape (3,)."""
+    @property
+    @deprecated("use FloatReport.outcome == 'not_finite'")
+    def skipped(self) -> bool:
+        """Deprecated: ``outcome == "not_finite"``."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(
+        self,
+    ) -> tuple[
+        type[FloatReport],
+        tuple[
+            float,
+            tuple[float, float, float],
+            tuple[float, float, float],
+            tuple[float, float, float],
+            tuple[float, float, float],
+            tuple[float, float, float],
+            tuple[float, float, float],
+            float,
+            str,
+        ],
+    ]: ...
+
+@final
+class Controller:
+    """Bodies that float, for any physics engine: one call to ``step`` per step for every body."""
+
+    def __new__(
+        cls,
+        water: Water | None = None,
+        method: _MethodName | str | None = "exact",
+        damping: DampingCoefficients | None = None,
+    ) -> Controller: ...
+    @property
+    def water(self) -> Water:
+        """The controller's water (still)."""
+    @water.setter
+    def water(self, water: Water, /) -> None: ...
+    @property
+    def method(self) -> str:
+        """The controller's buoyancy method, its canonical name."""
+    @method.setter
+    def method(self, method: _MethodName | str, /) -> None: ...
+    @property
+    def damping(self) -> DampingCoefficients:
+        """The controller's damping coefficients."""
+    @damping.setter
+    def damping(self, damping: DampingCoefficients, /) -> None: ...
+    def __len__(self) -> int: ...
+    def add(
+        self,
+        parts: _Part | Sequence[_Part],
+        method: _MethodName | str | None = None,
+        water: Water | None = None,
+        damping: DampingCoefficients | None = None,
+    ) -> int:
+        """Adds a body; returns its number."""
+    def replace(
+        self,
+        index: SupportsIndex,
+        parts: _Part | Sequence[_Part],
+        method: _MethodName | str | None = None,
+        water: Water | None = None,
+        damping: DampingCoefficients | None = None,
+    ) -> None:
+        """Replaces the parts and overrides of body ``index``, keeping its books."""
+    def remove(self, index: SupportsIndex) -> tuple[_Float32Array, _Float32Array]:
+        """Removes body ``index``; returns the force and torque that take its share back off."""
+    def forget_applied(self, index: SupportsIndex) -> None:
+        """The engine's forces of body ``index`` were reset: its share is zero now."""
+    def report(self, index: SupportsIndex) -> FloatReport:
+        """What the last ``step`` computed and applied for body ``index``."""
+    def parts(self, index: SupportsIndex) -> list[tuple[Mesh, _FloatArray, _FloatArray]]:
+        """The parts of body ``index``: (mesh, position, quaternion (x, y, z, w))."""
+    def step(
+        self,
+        dt: float,
+        positions: npt.ArrayLike,
+        quaternions: npt.ArrayLike,
+        centers_of_mass: npt.ArrayLike,
+        linear_velocities: npt.ArrayLike,
+        angular_velocities: npt.ArrayLike,
+        masses: npt.ArrayLike,
+        inverse_masses: npt.ArrayLike,
+        inverse_inertias: npt.ArrayLike,
+        gravity_scales: npt.ArrayLike,
+        applied_forces: npt.ArrayLike,
+        applied_torques: npt.ArrayLike,
+        dynamic: npt.ArrayLike,
+        sleeping: npt.ArrayLike,
+    ) -> tuple[_Float32Array, _Float32Array, _BoolArray]:
+        """One step of every body: the forces and torques to add (N, 3) and whether to wake (N,)."""
 
 def load(path: str | os.PathLike[str]) -> Mesh: ...
 def cube(n: int = 1) -> Mesh: ...

@@ -138,6 +138,11 @@ impl PyMesh {
         }
     }
 
+    /// The core's mesh.
+    pub fn core(&self) -> &buoyancy_core::Mesh<f64> {
+        &self.inner
+    }
+
     /// A mesh validated and prepared by the core from vertices and triangles, with the
     /// interpreter lock released.
     pub fn build(py: Python<'_>, (vertices, triangles): Shape) -> PyResult<Self> {

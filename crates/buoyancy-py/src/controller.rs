@@ -1,0 +1,697 @@
+//! `Controller`: the core's engine-independent controller of floating bodies
+//! (`buoyancy_core::controller`), for any engine that can hand over its bodies' states as NumPy
+//! arrays: one call per step for every body, with the interpreter lock released.
+
+use buoyancy_core::controller::{BodyOptions, BodyState, Command, Controller, Part, Settings};
+use buoyancy_core::nalgebra::{Translation3, UnitQuaternion, Vector3};
+use buoyancy_core::{DampingCoefficients, Method, Pose, Water};
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyArray1, PyArray2};
+use pyo3::exceptions::{PyIndexError, PyTypeError};
+use pyo3::prelude::*;
+use pyo3::types::{PyList, PyTuple};
+
+use crate::arrays;
+use crate::convert::{self, given};
+use crate::damping::PyDampingCoefficients;
+use crate::errors::{arg_error, to_py, type_error};
+use crate::float_report::PyFloatReport;
+use crate::mesh::PyMesh;
+use crate::step_inputs::{Columns, Input};
+use crate::water::PyWater;
+
+/// One part of a body as given: the Python mesh (kept for `parts`), and its shape → body pose.
+struct GivenPart {
+    mesh: Py<PyMesh>,
+    position: Vector3<f64>,
+    rotation: UnitQuaternion<f64>,
+}
+
+/// `water`: a still `Water`, or `None` when absent or `None`. Waves are a `ValueError`: the
+/// controller (its damping) assumes a flat surface.
+fn still_water(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<Water<f64>>> {
+    let Some(water) = convert::instance::<PyWater>(obj, name)? else {
+        return Ok(None);
+    };
+    let water = water.get();
+    if water.waves.is_some() {
+        return Err(arg_error(
+            name,
+            "the controller floats bodies in still water (its damping assumes a flat surface), and this water has waves: pass a Water without waves",
+        ));
+    }
+    Ok(Some(water.inner))
+}
+
+/// `method`, or `None` when absent or `None`.
+fn method(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Method>> {
+    given(obj).map(|m| convert::method(Some(m))).transpose()
+}
+
+/// `damping`, or `None` when absent or `None`.
+fn damping(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<DampingCoefficients<f64>>> {
+    Ok(convert::instance::<PyDampingCoefficients>(obj, "damping")?.map(|d| d.get().inner))
+}
+
+/// The overrides of one body.
+fn body_options(
+    method_: Option<&Bound<'_, PyAny>>,
+    water: Option<&Bound<'_, PyAny>>,
+    damping_: Option<&Bound<'_, PyAny>>,
+) -> PyResult<BodyOptions> {
+    Ok(BodyOptions {
+        method: method(method_)?,
+        water: still_water(water, "water")?,
+        damping: damping(damping_)?,
+    })
+}
+
+const PARTS_EXPECTED: &str =
+    "a Mesh, or a list of parts, each a Mesh or a (mesh, position, quaternion) tuple";
+
+/// One item of `parts`: a `Mesh` (placed at the body's origin) or `(mesh, position,
+/// quaternion)`.
+fn part(item: &Bound<'_, PyAny>, name: &str) -> PyResult<GivenPart> {
+    if let Ok(mesh) = item.cast::<PyMesh>() {
+        return Ok(GivenPart {
+            mesh: mesh.clone().unbind(),
+            position: Vector3::zeros(),
+            rotation: UnitQuaternion::identity(),
+        });
+    }
+    let expected = "a Mesh or a (mesh, position, quaternion) tuple";
+    let Ok(tuple) = item.cast::<PyTuple>() else {
+        return Err(type_error(name, expected, item));
+    };
+    if tuple.len() != 3 {
+        return Err(PyTypeError::new_err(format!(
+            "{name}: expected {expected}, got a tuple of {} items",
+            tuple.len()
+        )));
+    }
+    let mesh = tuple.get_item(0)?;
+    let mesh = mesh
+        .cast::<PyMesh>()
+        .map_err(|_| type_error(&format!("{name}[0]"), "a buoyancy.Mesh", &mesh))?;
+    Ok(GivenPart {
+        mesh: mesh.clone().unbind(),
+        position: convert::vector3(&tuple.get_item(1)?, &format!("{name}[1] (position)"))?,
+        rotation: convert::rotation(&tuple.get_item(2)?, &format!("{name}[2] (quaternion)"))?,
+    })
+}
+
+/// The `parts` argument: one `Mesh`, or a list (or tuple) of parts.
+fn given_parts(parts: &Bound<'_, PyAny>) -> PyResult<Vec<GivenPart>> {
+    if parts.cast::<PyMesh>().is_ok() {
+        return Ok(vec![part(parts, "parts")?]);
+    }
+    let items: Vec<Bound<'_, PyAny>> = if let Ok(list) = parts.cast::<PyList>() {
+        list.iter().collect()
+    } else if let Ok(tuple) = parts.cast::<PyTuple>() {
+        tuple.iter().collect()
+    } else {
+        return Err(type_error("parts", PARTS_EXPECTED, parts));
+    };
+    if items.is_empty() {
+        return Err(arg_error(
+            "parts",
+            "a floating body needs at least one mesh",
+        ));
+    }
+    items
+        .iter()
+        .enumerate()
+        .map(|(k, item)| part(item, &format!("parts[{k}]")))
+        .collect()
+}
+
+/// The core's parts of the given parts (each mesh copied once, here).
+fn core_parts(py: Python<'_>, parts: &[GivenPart]) -> Vec<Part> {
+    parts
+        .iter()
+        .map(|p| Part {
+            mesh: p.mesh.bind(py).get().core().clone(),
+            shape_to_body: Pose::from_parts(Translation3::from(p.position), p.rotation),
+        })
+        .collect()
+}
+
+/// Bodies that float, for any physics engine: the core's controller (``buoyancy-core``'s
+/// ``controller`` module, also behind the Rust rapier adapter and :mod:`buoyancy.rapier`).
+///
+/// Each body is made of one or more closed meshes (its *parts*) placed on it. Once per step the
+/// engine's glue reads every body's state into NumPy arrays, one row per body, and calls
+/// :meth:`step`, which computes the exact buoyancy and the hydrodynamic damping of every body
+/// (in parallel, without the interpreter lock) and returns, per body, a force and a torque to
+/// **add** to what the engine holds for it, and whether to wake it.
+///
+/// Parameters
+/// ----------
+/// water : Water, optional
+///     The water, without waves; default ``Water()`` (fresh, surface ``y = 0``, y up,
+///     ``g = 9.81``). Gravity on the bodies is taken as the water's: ``g`` against its normal,
+///     times each body's gravity scale.
+/// method : str
+///     The buoyancy method (see :data:`buoyancy.METHODS`), default ``"exact"``.
+/// damping : DampingCoefficients, optional
+///     The hydrodynamic damping, default ``DampingCoefficients()``;
+///     ``DampingCoefficients.off()`` for none.
+///
+/// The controller's settings apply to every body added without an override.
+///
+/// Forces the application adds itself
+///     Engines such as rapier keep the forces added to a body until they are reset. The
+///     controller never asks to reset them: it remembers the force and torque it had added (its
+///     *share*, in ``float32`` like the engine's) and asks to add only the difference, so the
+///     engine holds *the application's own forces + this step's buoyancy and damping*. After
+///     resetting a body's forces, call :meth:`forget_applied`; :meth:`remove` returns what to
+///     add to take the share back off. A dynamic body whose applied force and torque are both
+///     exactly zero while the share is not had them reset by the engine: the share is
+///     forgotten, and the whole share is added again.
+///
+/// Bodies the engine does not move by forces
+///     (``dynamic`` False: kinematic, fixed, disabled) get nothing computed and keep their
+///     share, so that a body made kinematic and dynamic again gets its buoyancy once.
+///
+/// Sleeping bodies
+///     are woken (``wake``) when the controller's force or torque on them has changed by more
+///     than 0.1 % (of the force plus the body's weight) since they were last awake.
+///
+/// Stability
+///     The damping is semi-implicit: the damping wrench ``W`` of the model is applied as
+///     ``(W − α·dt·G) / (1 + α·dt)``, with ``G`` the step's buoyancy, gravity and the
+///     application's own forces and ``α = √(W·M⁻¹W / q̇·M·q̇)`` the damping rate in the metric of
+///     the body's mass and inertia, so that light bodies reach the model's terminal velocity and
+///     bodies dropped fast do not overshoot. A body whose pose, velocity or result is not finite
+///     gets no force (its share is taken back); its report's outcome is ``"not_finite"``.
+///
+/// Bodies are numbered from 0 in the order they were added; :meth:`remove` moves the last body
+/// into the freed number. World frame, SI units, torques about each body's center of mass;
+/// quaternions ``(x, y, z, w)``.
+///
+/// Examples
+/// --------
+/// A 1 m cube of 500 kg at rest with its center at the water level gets its weight, 4905 N:
+///
+/// >>> controller = buoyancy.Controller()                 # fresh water, surface y = 0
+/// >>> cube = controller.add(buoyancy.shapes.cube())      # body 0: one part, on its origin
+/// >>> add_force, add_torque, wake = controller.step(
+/// ...     1 / 60,                                        # dt, s
+/// ...     positions=np.zeros((1, 3)),                    # body frame → world, m
+/// ...     quaternions=np.array([[0.0, 0.0, 0.0, 1.0]]),  # (x, y, z, w)
+/// ...     centers_of_mass=np.zeros((1, 3)),              # world, m
+/// ...     linear_velocities=np.zeros((1, 3)),            # m/s
+/// ...     angular_velocities=np.zeros((1, 3)),           # rad/s
+/// ...     masses=np.array([500.0]),                      # kg
+/// ...     inverse_masses=np.full((1, 3), 1 / 500),       # 1/kg, per world axis
+/// ...     inverse_inertias=np.eye(3)[None] * 6 / 500,    # world, 1/(kg·m²)
+/// ...     gravity_scales=np.ones(1),
+/// ...     applied_forces=np.zeros((1, 3), np.float32),   # what the engine holds, N
+/// ...     applied_torques=np.zeros((1, 3), np.float32),  # N·m
+/// ...     dynamic=np.array([True]),
+/// ...     sleeping=np.array([False]),
+/// ... )
+/// >>> add_force.tolist(), wake.tolist()                  # add this to the engine's force
+/// ([[0.0, 4905.0, 0.0]], [True])
+/// >>> report = controller.report(cube)
+/// >>> report.outcome, report.submerged_volume
+/// ('applied', 0.5)
+#[pyclass(module = "buoyancy", name = "Controller")]
+pub struct PyController {
+    inner: Controller,
+    /// The parts of each body as given, in the controller's numbering.
+    parts: Vec<Vec<GivenPart>>,
+    /// Each step's states and commands, kept so that a step does not allocate them.
+    states: Vec<BodyState>,
+    commands: Vec<Command>,
+}
+
+impl PyController {
+    /// `index` as a body number, or an `IndexError`.
+    fn body(&self, index: &Bound<'_, PyAny>) -> PyResult<usize> {
+        let n = self.inner.len();
+        let i: i64 = index
+            .extract()
+            .map_err(|_| type_error("index", "an integer", index))?;
+        usize::try_from(i).ok().filter(|&i| i < n).ok_or_else(|| {
+            PyIndexError::new_err(format!(
+                "index: no body {i}; the controller has {n} (numbered from 0)"
+            ))
+        })
+    }
+}
+
+/// `step`'s result: the forces and torques to add, and whether to wake each body.
+type StepResult<'py> = (
+    Bound<'py, PyArray2<f32>>,
+    Bound<'py, PyArray2<f32>>,
+    Bound<'py, PyArray1<bool>>,
+);
+
+/// `remove`'s result: the force and torque to add to take the share back off.
+type TakeBack<'py> = (Bound<'py, PyArray1<f32>>, Bound<'py, PyArray1<f32>>);
+
+#[pymethods]
+impl PyController {
+    #[new]
+    #[pyo3(
+        signature = (water=None, method=None, damping=None),
+        text_signature = "(water=None, method='exact', damping=None)"
+    )]
+    fn py_new(
+        water: Option<&Bound<'_, PyAny>>,
+        method: Option<&Bound<'_, PyAny>>,
+        damping: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let settings = Settings {
+            water: still_water(water, "water")?.unwrap_or_default(),
+            method: self::method(method)?.unwrap_or(Method::Exact),
+            damping: self::damping(damping)?.unwrap_or_default(),
+        };
+        Ok(PyController {
+            inner: Controller::new(settings),
+            parts: Vec::new(),
+            states: Vec::new(),
+            commands: Vec::new(),
+        })
+    }
+
+    /// The controller's water (a body's ``water`` overrides it).
+    #[getter]
+    fn get_water(&self) -> PyWater {
+        PyWater::still(self.inner.settings().water)
+    }
+    #[setter]
+    fn set_water(&mut self, water: &Bound<'_, PyAny>) -> PyResult<()> {
+        if water.is_none() {
+            return Err(type_error("water", "a buoyancy.Water", water));
+        }
+        self.inner.settings_mut().water = still_water(Some(water), "water")?.unwrap_or_default();
+        Ok(())
+    }
+
+    /// The controller's buoyancy method, as its canonical name (``"exact"``, …).
+    #[getter]
+    fn get_method(&self) -> &'static str {
+        self.inner.settings().method.name()
+    }
+    #[setter]
+    fn set_method(&mut self, method: &Bound<'_, PyAny>) -> PyResult<()> {
+        if method.is_none() {
+            return Err(type_error(
+                "method",
+                "a method name such as 'exact'",
+                method,
+            ));
+        }
+        self.inner.settings_mut().method = convert::method(Some(method))?;
+        Ok(())
+    }
+
+    /// The controller's damping coefficients.
+    #[getter]
+    fn get_damping(&self) -> PyDampingCoefficients {
+        PyDampingCoefficients {
+            inner: self.inner.settings().damping,
+        }
+    }
+    #[setter]
+    fn set_damping(&mut self, damping: &Bound<'_, PyAny>) -> PyResult<()> {
+        if damping.is_none() {
+            return Err(type_error(
+                "damping",
+                "a buoyancy.DampingCoefficients",
+                damping,
+            ));
+        }
+        self.inner.settings_mut().damping = self::damping(Some(damping))?.unwrap_or_default();
+        Ok(())
+    }
+
+    fn __len__(&self) -> usize {
+        self.inner.len()
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
+        let water = Bound::new(py, self.get_water())?.repr()?;
+        Ok(format!(
+            "Controller({} bodies, water={water}, method='{}')",
+            self.inner.len(),
+            self.get_method()
+        ))
+    }
+
+    /// Adds a body; returns its number (the count of bodies before it).
+    ///
+    /// Parameters
+    /// ----------
+    /// parts : Mesh or list
+    ///     The body's closed meshes: one :class:`Mesh`, in the body's frame, or a list of
+    ///     parts, each a ``Mesh`` in the body's frame or a tuple ``(mesh, position,
+    ///     quaternion)`` of a mesh in its own frame and the pose of that frame in the body's
+    ///     (``x_body = R @ x_mesh + position``; a quaternion ``(x, y, z, w)`` or a 3×3 rotation
+    ///     matrix). The body's frame is the one of the ``positions`` and ``quaternions`` given
+    ///     to :meth:`step`. Each mesh is copied once, here.
+    /// method : str, optional
+    ///     This body's method; default the controller's.
+    /// water : Water, optional
+    ///     This body's water, without waves; default the controller's.
+    /// damping : DampingCoefficients, optional
+    ///     This body's damping; default the controller's.
+    ///
+    /// Buoyancy and pressure drag add up over the parts; the angular damping is the whole
+    /// body's (total volume, total wetted fraction), so that splitting a shape into parts does
+    /// not change it.
+    ///
+    /// >>> controller = buoyancy.Controller()
+    /// >>> cube = buoyancy.shapes.cube()
+    /// >>> controller.add([(cube, (-1, 0, 0), (0, 0, 0, 1)), (cube, (1, 0, 0), (0, 0, 0, 1))])
+    /// 0
+    /// >>> len(controller.parts(0))
+    /// 2
+    #[pyo3(
+        signature = (parts, method=None, water=None, damping=None),
+        text_signature = "(self, parts, method=None, water=None, damping=None)"
+    )]
+    fn add(
+        &mut self,
+        py: Python<'_>,
+        parts: &Bound<'_, PyAny>,
+        method: Option<&Bound<'_, PyAny>>,
+        water: Option<&Bound<'_, PyAny>>,
+        damping: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<usize> {
+        let given = given_parts(parts)?;
+        let options = body_options(method, water, damping)?;
+        let index = self
+            .inner
+            .add(core_parts(py, &given), options)
+            .map_err(|e| to_py(e, Some("parts")))?;
+        self.parts.push(given);
+        Ok(index)
+    }
+
+    /// Replaces the parts and overrides of body ``index`` (arguments as in :meth:`add`),
+    /// keeping the books of what was applied to it. ``IndexError`` if there is no such body.
+    #[pyo3(
+        signature = (index, parts, method=None, water=None, damping=None),
+        text_signature = "(self, index, parts, method=None, water=None, damping=None)"
+    )]
+    fn replace(
+        &mut self,
+        py: Python<'_>,
+        index: &Bound<'_, PyAny>,
+        parts: &Bound<'_, PyAny>,
+        method: Option<&Bound<'_, PyAny>>,
+        water: Option<&Bound<'_, PyAny>>,
+        damping: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<()> {
+        let i = self.body(index)?;
+        let given = given_parts(parts)?;
+        let options = body_options(method, water, damping)?;
+        self.inner
+            .replace(i, core_parts(py, &given), options)
+            .map_err(|e| to_py(e, Some("parts")))?;
+        self.parts[i] = given;
+        Ok(())
+    }
+
+    /// Removes body ``index`` and returns ``(force, torque)``, float32 arrays of shape (3,),
+    /// N and N·m: what to add to the engine's force and torque to take the controller's share
+    /// back off the body. Add it even to a body the engine does not move by forces (the share
+    /// is there: with rapier, make the body dynamic for the time of the addition). The last
+    /// body takes the number ``index``. ``IndexError`` if there is no such body.
+    fn remove<'py>(
+        &mut self,
+        py: Python<'py>,
+        index: &Bound<'_, PyAny>,
+    ) -> PyResult<TakeBack<'py>> {
+        let i = self.body(index)?;
+        let command = self
+            .inner
+            .remove(i)
+            .unwrap_or_else(|| unreachable!("body {i} was checked to exist"));
+        self.parts.swap_remove(i);
+        Ok((
+            PyArray1::from_slice(py, command.add_force.as_slice()),
+            PyArray1::from_slice(py, command.add_torque.as_slice()),
+        ))
+    }
+
+    /// Tells the controller that the engine's forces and torques of body ``index`` were reset,
+    /// so that its share is zero now; the next :meth:`step` adds the whole share again.
+    /// ``IndexError`` if there is no such body.
+    fn forget_applied(&mut self, index: &Bound<'_, PyAny>) -> PyResult<()> {
+        let i = self.body(index)?;
+        self.inner.forget_applied(i);
+        Ok(())
+    }
+
+    /// What the last :meth:`step` computed and applied for body ``index``
+    /// (a :class:`FloatReport`). ``IndexError`` if there is no such body.
+    fn report(&self, index: &Bound<'_, PyAny>) -> PyResult<PyFloatReport> {
+        let i = self.body(index)?;
+        let inner = *self
+            .inner
+            .report(i)
+            .unwrap_or_else(|| unreachable!("body {i} was checked to exist"));
+        Ok(PyFloatReport { inner })
+    }
+
+    /// The parts of body ``index``: a list of ``(mesh, position, quaternion)``, each mesh the
+    /// object given to :meth:`add` and its pose in the body's frame (arrays of shape (3,) and
+    /// (4,), the quaternion ``(x, y, z, w)``). ``IndexError`` if there is no such body.
+    #[allow(clippy::type_complexity)]
+    fn parts<'py>(
+        &self,
+        py: Python<'py>,
+        index: &Bound<'_, PyAny>,
+    ) -> PyResult<
+        Vec<(
+            Bound<'py, PyMesh>,
+            Bound<'py, PyArray1<f64>>,
+            Bound<'py, PyArray1<f64>>,
+        )>,
+    > {
+        let i = self.body(index)?;
+        Ok(self.parts[i]
+            .iter()
+            .map(|p| {
+                let q = p.rotation.coords;
+                (
+                    p.mesh.bind(py).clone(),
+                    arrays::vector(py, p.position.as_slice()),
+                    arrays::vector(py, &[q.x, q.y, q.z, q.w]),
+                )
+            })
+            .collect())
+    }
+
+    /// One step of ``dt`` seconds for every body: its buoyancy and damping at the state given,
+    /// and what to add to the engine's force and torque for it.
+    ///
+    /// Every array has one row per body, in the controller's numbering (``N = len(self)``).
+    /// Arrays of the right dtype are read in place, others are converted first. The pose,
+    /// center of mass and velocities may be NaN or infinite: the body then gets no force and
+    /// its report says ``"not_finite"``.
+    ///
+    /// Parameters
+    /// ----------
+    /// dt : float
+    ///     The step, s, finite and non-negative (the damping's semi-implicit scheme needs it).
+    /// positions : array_like, shape (N, 3)
+    ///     Origin of each body's frame (the frame its parts are placed in), world, m.
+    /// quaternions : array_like, shape (N, 4)
+    ///     Rotation of each body's frame, ``(x, y, z, w)``; normalised (a finite one whose norm
+    ///     is off 1 by more than :data:`QUATERNION_TOLERANCE` is a ``ValueError``).
+    /// centers_of_mass : array_like, shape (N, 3)
+    ///     World centers of mass, m: the torques are about them.
+    /// linear_velocities : array_like, shape (N, 3)
+    ///     Velocities of the centers of mass, m/s.
+    /// angular_velocities : array_like, shape (N, 3)
+    ///     Angular velocities, rad/s.
+    /// masses : array_like, shape (N,)
+    ///     Masses, kg, finite and non-negative.
+    /// inverse_masses : array_like, shape (N, 3) or (N,)
+    ///     Inverse masses, 1/kg, per world axis (zero on a locked translation axis) or one per
+    ///     body; finite and non-negative.
+    /// inverse_inertias : array_like, shape (N, 3, 3)
+    ///     World inverse inertia tensors about the centers of mass, 1/(kg·m²) (zero rows and
+    ///     columns on locked rotation axes), finite.
+    /// gravity_scales : array_like, shape (N,)
+    ///     The factor of gravity on each body, finite.
+    /// applied_forces, applied_torques : array_like, shape (N, 3), float32
+    ///     The force (N) and torque (N·m, about the center of mass) the engine holds for each
+    ///     body: the application's own plus the controller's share (float64 is rounded to
+    ///     float32, what the controller keeps its share in).
+    /// dynamic : array_like of bool, shape (N,)
+    ///     Whether the engine moves each body by forces (False: kinematic, fixed, disabled).
+    /// sleeping : array_like of bool, shape (N,)
+    ///     Whether each body sleeps.
+    ///
+    /// Returns
+    /// -------
+    /// add_forces : ndarray, shape (N, 3), float32
+    ///     Force to add to what the engine holds for each body, N (zero: nothing to add).
+    /// add_torques : ndarray, shape (N, 3), float32
+    ///     Torque to add, about the center of mass, N·m.
+    /// wake : ndarray, shape (N,), bool
+    ///     Whether to wake each body if it sleeps: the force or torque changed by more than
+    ///     0.1 % since it was last awake (only ever True when something is added; the flag to
+    ///     give the engine's ``add_force``).
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     Naming the argument (and the row) at fault: a shape other than the one above (with
+    ///     ``N`` the number of bodies), values that cannot be converted, a non-unit quaternion,
+    ///     negative or non-finite mass properties, a ``dt`` that is negative or not finite.
+    #[pyo3(
+        signature = (dt, positions, quaternions, centers_of_mass, linear_velocities, angular_velocities, masses, inverse_masses, inverse_inertias, gravity_scales, applied_forces, applied_torques, dynamic, sleeping),
+        text_signature = "(self, dt, positions, quaternions, centers_of_mass, linear_velocities, angular_velocities, masses, inverse_masses, inverse_inertias, gravity_scales, applied_forces, applied_torques, dynamic, sleeping)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn step<'py>(
+        &mut self,
+        py: Python<'py>,
+        dt: &Bound<'py, PyAny>,
+        positions: &Bound<'py, PyAny>,
+        quaternions: &Bound<'py, PyAny>,
+        centers_of_mass: &Bound<'py, PyAny>,
+        linear_velocities: &Bound<'py, PyAny>,
+        angular_velocities: &Bound<'py, PyAny>,
+        masses: &Bound<'py, PyAny>,
+        inverse_masses: &Bound<'py, PyAny>,
+        inverse_inertias: &Bound<'py, PyAny>,
+        gravity_scales: &Bound<'py, PyAny>,
+        applied_forces: &Bound<'py, PyAny>,
+        applied_torques: &Bound<'py, PyAny>,
+        dynamic: &Bound<'py, PyAny>,
+        sleeping: &Bound<'py, PyAny>,
+    ) -> PyResult<StepResult<'py>> {
+        let dt = convert::real(dt, "dt")?;
+        if !(dt.is_finite() && dt >= 0.0) {
+            return Err(arg_error(
+                "dt",
+                format!("must be finite and non-negative (s), got {dt}"),
+            ));
+        }
+        let n = self.inner.len();
+        let row3: &[&[usize]] = &[&[3]];
+        let scalar: &[&[usize]] = &[&[]];
+        let vectors = "one 3-vector per body";
+        let f64s = "float64";
+        let positions = Input::<f64>::parse(positions, "positions", n, row3, f64s, vectors)?;
+        let quaternions = Input::<f64>::parse(
+            quaternions,
+            "quaternions",
+            n,
+            &[&[4]],
+            f64s,
+            "one quaternion (x, y, z, w) per body",
+        )?;
+        let centers_of_mass =
+            Input::<f64>::parse(centers_of_mass, "centers_of_mass", n, row3, f64s, vectors)?;
+        let linear_velocities = Input::<f64>::parse(
+            linear_velocities,
+            "linear_velocities",
+            n,
+            row3,
+            f64s,
+            vectors,
+        )?;
+        let angular_velocities = Input::<f64>::parse(
+            angular_velocities,
+            "angular_velocities",
+            n,
+            row3,
+            f64s,
+            vectors,
+        )?;
+        let masses = Input::<f64>::parse(masses, "masses", n, scalar, f64s, "one mass per body")?;
+        let inverse_masses = Input::<f64>::parse(
+            inverse_masses,
+            "inverse_masses",
+            n,
+            &[&[3], &[]],
+            f64s,
+            "per world axis, or one per body",
+        )?;
+        let inverse_inertias = Input::<f64>::parse(
+            inverse_inertias,
+            "inverse_inertias",
+            n,
+            &[&[3, 3]],
+            f64s,
+            "one 3×3 world inverse inertia tensor per body",
+        )?;
+        let gravity_scales = Input::<f64>::parse(
+            gravity_scales,
+            "gravity_scales",
+            n,
+            scalar,
+            f64s,
+            "one factor per body",
+        )?;
+        let applied_forces = Input::<f32>::parse(
+            applied_forces,
+            "applied_forces",
+            n,
+            row3,
+            "float32",
+            vectors,
+        )?;
+        let applied_torques = Input::<f32>::parse(
+            applied_torques,
+            "applied_torques",
+            n,
+            row3,
+            "float32",
+            vectors,
+        )?;
+        let dynamic =
+            Input::<bool>::parse(dynamic, "dynamic", n, scalar, "bool", "one flag per body")?;
+        let sleeping =
+            Input::<bool>::parse(sleeping, "sleeping", n, scalar, "bool", "one flag per body")?;
+        let columns = Columns {
+            positions: positions.values(),
+            quaternions: quaternions.values(),
+            centers_of_mass: centers_of_mass.values(),
+            linear_velocities: linear_velocities.values(),
+            angular_velocities: angular_velocities.values(),
+            masses: masses.values(),
+            inverse_masses: inverse_masses.values(),
+            inverse_masses_per_axis: inverse_masses.ndim() == 2,
+            inverse_inertias: inverse_inertias.values(),
+            gravity_scales: gravity_scales.values(),
+            applied_forces: applied_forces.values(),
+            applied_torques: applied_torques.values(),
+            dynamic: dynamic.values(),
+            sleeping: sleeping.values(),
+        };
+        let (controller, states, commands) =
+            (&mut self.inner, &mut self.states, &mut self.commands);
+        py.detach(|| {
+            columns.read(n, states)?;
+            commands.resize(n, Command::default());
+            controller.step(states, dt, commands);
+            Ok(())
+        })
+        .map_err(|rejected: crate::step_inputs::Rejected| rejected.into_py())?;
+
+        let mut forces = Vec::with_capacity(3 * n);
+        let mut torques = Vec::with_capacity(3 * n);
+        let mut wake = Vec::with_capacity(n);
+        for c in commands.iter() {
+            forces.extend_from_slice(c.add_force.as_slice());
+            torques.extend_from_slice(c.add_torque.as_slice());
+            wake.push(c.wake);
+        }
+        let rows = |flat: Vec<f32>| {
+            Array2::from_shape_vec((n, 3), flat)
+                .unwrap_or_else(|_| unreachable!("three values per body"))
+                .into_pyarray(py)
+        };
+        Ok((rows(forces), rows(torques), PyArray1::from_vec(py, wake)))
+    }
+}
