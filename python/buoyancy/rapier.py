@@ -1,12 +1,14 @@
 """Buoyancy and hydrodynamic damping for bodies of `rapier3d <https://pypi.org/project/rapier3d/>`_,
 rapier's official Python binding (``pip install 'buoyancy[rapier]'``).
 
-:class:`FloatingBodies` holds the bodies that float, each with a :class:`buoyancy.Mesh` in the
-body's local frame, and the water. Call :meth:`FloatingBodies.apply` once per step, before the
-world steps (or :meth:`FloatingBodies.step`, which does both): for every registered body it
-computes the exact buoyancy and the hydrodynamic damping of :meth:`buoyancy.Mesh.damping` at
-the body's current pose and velocity, and applies their sum as a force and a torque about the
-body's world center of mass. It mirrors the Rust adapter ``buoyancy-rapier``.
+:class:`FloatingBodies` holds the bodies that float, each made of one or more closed
+:class:`buoyancy.Mesh` es placed on the body, and the water. Call :meth:`FloatingBodies.apply`
+once per step, before the world steps (or :meth:`FloatingBodies.step`, which does both): it reads
+every registered body's state from rapier, computes the exact buoyancy and the hydrodynamic
+damping of all of them in one call to the engine-independent :class:`buoyancy.Controller` (in
+Rust, in parallel, without the interpreter lock), and adds to each body the change of its force
+and torque about the body's world center of mass. It is glue over the same controller as the Rust
+adapter ``buoyancy-rapier``, and behaves like it.
 
 Example (a 1 m crate of density 500 kg/m³ floats half submerged)::
 
@@ -29,47 +31,54 @@ Sleeping
     (0.4 m/s by default) for 2 s, and a floating body bobbing gently does so before it reaches
     equilibrium: asleep, it stays where it was (within a few mm for a 1 m body). Build floating
     bodies with ``can_sleep(False)``, or lower their ``activation`` thresholds, when the
-    equilibrium matters. ``apply`` wakes a sleeping body only when its force changes by more
-    than 0.1% (say the water moved).
+    equilibrium matters. ``apply`` wakes a sleeping body when its force or torque has changed by
+    more than 0.1 % (of the force plus the body's weight) since it was last awake, so that slow
+    changes, a rising tide, add up.
 
 Forces the application adds itself
     rapier keeps the forces and torques added to a body (``add_force``, ``add_torque``) until
     ``reset_forces`` / ``reset_torques``. ``FloatingBodies`` never resets them: it remembers the
-    force and torque it added at the previous :meth:`~FloatingBodies.apply` and adds only the
+    force and torque it added (its *share*, in rapier's ``float32``) and adds only the
     difference, so the body's ``user_force`` is always *the application's own forces + this
     step's buoyancy and damping*. A constant thrust added once stays. If the application resets
-    the forces of a registered body it must then call :meth:`~FloatingBodies.forget_applied`;
-    :meth:`~FloatingBodies.unregister` takes the adapter's share back off.
+    the forces of a registered body it must then call :meth:`~FloatingBodies.forget_applied`
+    (the share was wiped too; rapier's NaN quarantine, which zeroes both, is noticed by itself).
+    :meth:`~FloatingBodies.unregister` takes the share back off, even from a body that is not
+    dynamic (made dynamic for the time of the addition, since rapier ignores ``add_force`` on
+    other bodies). Kinematic, fixed and disabled bodies get nothing new and keep their share, so
+    that a body made kinematic and dynamic again gets its buoyancy once, not twice.
 
 Stability
-    The damping is explicit. So that a body dropped fast into the water cannot overshoot, the
-    damping force is scaled down, when needed, so that over one step it can at most stop the
-    body's velocity relative to the water (``|F| dt <= m |v|``), and the damping torque so that
-    it can at most stop the rotation (``|I⁻¹ τ| dt <= |ω|``, with the body's world inertia).
-    A body whose pose, velocity or result is not finite gets no force (the previous one is
-    taken back) and its report says ``skipped``.
+    The damping is semi-implicit: the damping wrench ``W`` of the model is applied as
+    ``(W − α·dt·G) / (1 + α·dt)``, with ``G`` the step's buoyancy, gravity and the application's
+    own forces (not contacts or joints) and ``α = √(W·M⁻¹W / q̇·M·q̇)`` the damping rate in the
+    metric of the body's mass and inertia (locked axes left out), so that a light body reaches
+    the damping model's terminal velocity and a body dropped fast into the water neither
+    overshoots nor oscillates; at rest (``G = 0``) it is one factor on the whole wrench, which
+    keeps its line of action. A body whose pose, velocity or result is not finite gets no force
+    (its share is taken back) and its report's ``outcome`` is ``"not_finite"``.
 
 Frames and units
-    The water, forces and torques are in rapier's world frame, SI units. A body's mesh is in the
-    body's frame (the frame of ``RigidBody.position``, not its center of mass); the torque is
-    taken about rapier's world center of mass, which need not be the mesh centroid. rapier works
-    in ``float32``; buoyancy and damping are computed in ``float64``.
+    The water, forces and torques are in rapier's world frame, SI units. A body's meshes are in
+    the body's frame (the frame of ``RigidBody.position``, not its center of mass), or placed on
+    it by a ``(mesh, position, quaternion)`` part; the torque is taken about rapier's world
+    center of mass, which need not be the mesh centroid. rapier works in ``float32``; buoyancy
+    and damping are computed in ``float64``.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Hashable
-from dataclasses import dataclass, field
+from collections.abc import Hashable, Sequence
 from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
-from ._core import DampingCoefficients, Mesh, Water
+from ._core import Controller, DampingCoefficients, FloatReport, Mesh, Water
 
 try:
-    import rapier3d  # noqa: F401  (the bodies this module drives are rapier3d's)
+    import rapier3d
 except ImportError as error:  # pragma: no cover - exercised only without rapier3d
     raise ImportError(
         "buoyancy.rapier needs rapier's Python binding: pip install 'buoyancy[rapier]' (or pip install rapier3d)"
@@ -77,80 +86,68 @@ except ImportError as error:  # pragma: no cover - exercised only without rapier
 
 __all__ = ["FloatReport", "FloatingBodies"]
 
-_ZERO3 = np.zeros(3)
+_DYNAMIC = rapier3d.RigidBodyType.DYNAMIC
+
+# The cheapest way to a rapier vector's numbers: its serialised float32s, read by NumPy for every
+# body at once (the unbound methods of the classes, no bound method made per call). The layout is
+# rapier3d's ``to_bytes`` format (an 8-byte header, then the float32s: a rotation x, y, z, w
+# before the translation for an Isometry3), checked once at import against values this module
+# builds (see _bytes_layout_ok); if it ever differs, the numbers are read with ``to_tuple``.
+_ISOMETRY_BYTES = rapier3d.Isometry3.to_bytes
+_POINT_BYTES = rapier3d.Point3.to_bytes
+_VEC_BYTES = rapier3d.Vec3.to_bytes
+_VEC = rapier3d.Vec3.to_tuple
+_POINT = rapier3d.Point3.to_tuple
+_ROTATION = rapier3d.Rotation3.to_tuple  # (x, y, z, w)
+_HEADER = "V8"
+# One body's position, center of mass, velocities and applied force and torque.
+_RECORD = np.dtype(
+    [
+        ("h0", _HEADER),
+        ("rotation", "<f4", 4),
+        ("translation", "<f4", 3),
+        ("h1", _HEADER),
+        ("center_of_mass", "<f4", 3),
+        ("h2", _HEADER),
+        ("linvel", "<f4", 3),
+        ("h3", _HEADER),
+        ("angvel", "<f4", 3),
+        ("h4", _HEADER),
+        ("force", "<f4", 3),
+        ("h5", _HEADER),
+        ("torque", "<f4", 3),
+    ]
+)
+# The scalars of one body: mass, gravity scale, dynamic and enabled, sleeping, locked axes.
+_MASS, _GRAVITY_SCALE, _ACTIVE, _SLEEPING, _LOCKED = range(5)
+# rapier's LockedAxes bits: translations x, y, z, then rotations x, y, z.
+_LOCK_BITS = np.array([1, 2, 4, 8, 16, 32], dtype=np.int64)
 
 
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """``np.cross`` for two 3-vectors, without its general-case overhead."""
-    return np.array(
-        (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]),
-        dtype=np.float64,
-    )
+def _bytes_layout_ok() -> bool:
+    """Whether rapier3d's ``to_bytes`` of an Isometry3, a Point3 and four Vec3s reads back as
+    :data:`_RECORD` says."""
+    try:
+        pose = rapier3d.Isometry3((1.5, -2.0, 3.25), (0.0, 0.6, 0.0, 0.8))
+        vectors = [(0.5, -1.0, 2.0), (4.0, 5.0, -6.0), (7.0, 0.25, 8.0), (-9.0, 10.0, 11.5)]
+        blob = _ISOMETRY_BYTES(pose) + _POINT_BYTES(rapier3d.Point3(-0.5, 0.75, 1.0))
+        blob += b"".join(_VEC_BYTES(rapier3d.Vec3(*v)) for v in vectors)
+        record = np.frombuffer(blob, dtype=_RECORD)
+        headers = {record[0][name].tobytes() for name in ("h0", "h1", "h2", "h3", "h4", "h5")}
+        return (
+            len(record) == 1
+            and len(headers) == 1
+            and record["rotation"][0].tolist() == [0.0, 0.6000000238418579, 0.0, 0.800000011920929]
+            and record["translation"][0].tolist() == [1.5, -2.0, 3.25]
+            and record["center_of_mass"][0].tolist() == [-0.5, 0.75, 1.0]
+            and [record[name][0].tolist() for name in ("linvel", "angvel", "force", "torque")]
+            == [list(v) for v in vectors]
+        )
+    except Exception:  # pragma: no cover - a rapier3d whose format differs
+        return False
 
 
-def _norm(v: np.ndarray) -> float:
-    return math.hypot(float(v[0]), float(v[1]), float(v[2]))
-
-
-def _vec(v: Any) -> np.ndarray:
-    """A rapier ``Vec3``/``Point3`` (or any 3-sequence) as a float64 array."""
-    return np.array((v[0], v[1], v[2]), dtype=np.float64)
-
-
-@dataclass(frozen=True, eq=False)
-class FloatReport:
-    """What :meth:`FloatingBodies.apply` computed and applied for one body, world frame, SI
-    units, torques about the body's world center of mass.
-
-    Attributes
-    ----------
-    submerged_volume : float
-        Volume under water, m³.
-    center_of_buoyancy : ndarray, shape (3,)
-        Center of the submerged volume, m.
-    center_of_mass : ndarray, shape (3,)
-        The body's world center of mass (rapier's), m.
-    buoyancy_force, buoyancy_torque : ndarray, shape (3,)
-        Buoyant force, N, and its torque about the center of mass, N·m.
-    damping_force, damping_torque : ndarray, shape (3,)
-        Damping force and torque after the stability clamp.
-    wetted_area : float
-        Area of the surface under water, m².
-    skipped : bool
-        Whether a pose, velocity or result was not finite, so that no force was applied.
-    """
-
-    submerged_volume: float = 0.0
-    center_of_buoyancy: np.ndarray = field(default_factory=lambda: _ZERO3.copy())
-    center_of_mass: np.ndarray = field(default_factory=lambda: _ZERO3.copy())
-    buoyancy_force: np.ndarray = field(default_factory=lambda: _ZERO3.copy())
-    buoyancy_torque: np.ndarray = field(default_factory=lambda: _ZERO3.copy())
-    damping_force: np.ndarray = field(default_factory=lambda: _ZERO3.copy())
-    damping_torque: np.ndarray = field(default_factory=lambda: _ZERO3.copy())
-    wetted_area: float = 0.0
-    skipped: bool = False
-
-    @property
-    def force(self) -> np.ndarray:
-        """The total force applied, ``buoyancy_force + damping_force``, N."""
-        return self.buoyancy_force + self.damping_force
-
-    @property
-    def torque(self) -> np.ndarray:
-        """The total torque applied about the center of mass, N·m."""
-        return self.buoyancy_torque + self.damping_torque
-
-
-@dataclass
-class _Body:
-    mesh: Mesh
-    water: Water | None
-    method: str | None
-    damping: DampingCoefficients | None
-    # What the adapter has added to the body and not taken back yet, in rapier's float32.
-    applied_force: np.ndarray = field(default_factory=lambda: np.zeros(3, dtype=np.float32))
-    applied_torque: np.ndarray = field(default_factory=lambda: np.zeros(3, dtype=np.float32))
-    report: FloatReport = field(default_factory=FloatReport)
+_BYTES_LAYOUT_OK = _bytes_layout_ok()
 
 
 def _water_for_gravity(gravity: npt.ArrayLike) -> Water:
@@ -174,21 +171,92 @@ def _water_for_gravity(gravity: npt.ArrayLike) -> Water:
     return Water(gravity=norm, normal=tuple(-g / norm))
 
 
-def _unit_quaternion(rb: Any) -> tuple[float, float, float, float]:
-    """The body's rotation as a unit quaternion (x, y, z, w), renormalised in float64."""
-    q = np.array(rb.rotation.quaternion, dtype=np.float64)
-    n = float(np.linalg.norm(q))
-    return tuple(q / n) if n > 0 and math.isfinite(n) else tuple(q)  # type: ignore[return-value]
+def _rotation_matrices(q: np.ndarray) -> np.ndarray:
+    """The rotation matrices (N, 3, 3) of unit quaternions (N, 4) ``(x, y, z, w)``."""
+    x, y, z, w = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
+    xx, yy, zz = x * x, y * y, z * z
+    xy, xz, yz, wx, wy, wz = x * y, x * z, y * z, w * x, w * y, w * z
+    r = np.empty((len(q), 3, 3))
+    r[:, 0, 0] = 1 - 2 * (yy + zz)
+    r[:, 0, 1] = 2 * (xy - wz)
+    r[:, 0, 2] = 2 * (xz + wy)
+    r[:, 1, 0] = 2 * (xy + wz)
+    r[:, 1, 1] = 1 - 2 * (xx + zz)
+    r[:, 1, 2] = 2 * (yz - wx)
+    r[:, 2, 0] = 2 * (xz - wy)
+    r[:, 2, 1] = 2 * (yz + wx)
+    r[:, 2, 2] = 1 - 2 * (xx + yy)
+    return r
 
 
-def _world_inverse_inertia(rb: Any) -> np.ndarray:
-    """The body's inverse inertia tensor in the world frame (locked axes not taken into account)."""
+def _local_mass_properties(rb: Any) -> tuple[float, np.ndarray]:
+    """A body's inverse mass (1/kg) and inverse inertia tensor in its own frame (3, 3),
+    1/(kg·m²), as rapier computes them (zero for a zero mass or principal inertia)."""
     props = rb.mass_properties
-    principal = _vec(props.principal_inertia)
-    inverse = np.divide(1.0, principal, out=np.zeros(3), where=principal > 0)
-    frame = np.asarray((rb.rotation * props.principal_inertia_local_frame).to_matrix(), dtype=np.float64)
-    r = frame.reshape(3, 3)
-    return (r * inverse) @ r.T
+    inverse_mass = float(props.inv_mass)
+    principal = np.array(_VEC(props.principal_inertia), dtype=np.float64)
+    inverse = np.divide(1.0, principal, out=np.zeros(3), where=principal != 0)
+    frame = np.asarray(props.principal_inertia_local_frame.to_matrix(), dtype=np.float64).reshape(3, 3)
+    return inverse_mass, (frame * inverse) @ frame.T
+
+
+class _Bodies:
+    """The registered bodies' handles in the controller's numbering, rapier's live views of them,
+    and their mass properties, read again only when they change."""
+
+    def __init__(self) -> None:
+        self.handles: list[Hashable] = []
+        self.index: dict[Hashable, int] = {}
+        # rapier's views of the bodies (``bodies[handle]``, which follow the body), for the set
+        # `owner`; None when they must be looked up again.
+        self.views: list[Any] | None = None
+        self.owner: Any = None
+        # rapier's serialised mass properties of each body when last read: the key of the two
+        # arrays below.
+        self.keys: list[bytes | None] = []
+        self.inverse_mass = np.zeros(0)
+        self.local_inverse_inertia = np.zeros((0, 3, 3))
+
+    def add(self, handle: Hashable) -> None:
+        self.index[handle] = len(self.handles)
+        self.handles.append(handle)
+        self.views = None
+        self.keys.append(None)
+        self.inverse_mass = np.append(self.inverse_mass, 0.0)
+        self.local_inverse_inertia = np.concatenate([self.local_inverse_inertia, np.zeros((1, 3, 3))])
+
+    def remove(self, i: int) -> None:
+        """Forgets body ``i``; the last body takes its number (as in the controller)."""
+        last = len(self.handles) - 1
+        del self.index[self.handles[i]]
+        if i != last:
+            moved = self.handles[last]
+            self.handles[i], self.keys[i] = moved, self.keys[last]
+            self.index[moved] = i
+            self.inverse_mass[i] = self.inverse_mass[last]
+            self.local_inverse_inertia[i] = self.local_inverse_inertia[last]
+        self.handles.pop()
+        self.keys.pop()
+        self.views = None
+        self.inverse_mass = self.inverse_mass[:last].copy()
+        self.local_inverse_inertia = self.local_inverse_inertia[:last].copy()
+
+    def look_up(self, bodies: Any) -> list[Any]:
+        """rapier's views of the bodies in the set ``bodies`` (``InvalidHandle`` if one is not
+        there)."""
+        if self.views is None or self.owner is not bodies:
+            self.views = [bodies[h] for h in self.handles]
+            self.owner = bodies
+        return self.views
+
+    def refresh(self, keys: list[bytes | None]) -> None:
+        """Reads again the mass properties of the bodies whose key changed."""
+        views = self.views
+        assert views is not None
+        for i, (old, new) in enumerate(zip(self.keys, keys, strict=True)):
+            if old != new:
+                self.inverse_mass[i], self.local_inverse_inertia[i] = _local_mass_properties(views[i])
+        self.keys = keys
 
 
 class FloatingBodies:
@@ -201,7 +269,9 @@ class FloatingBodies:
         water is fresh (1000 kg/m³), its surface passes through the origin with its up normal
         opposite to gravity, and ``g = |gravity|``.
     water : Water, optional
-        The world's water (overrides the one derived from ``gravity``).
+        The world's water, without waves (overrides the one derived from ``gravity``). Gravity on
+        the bodies is taken as the water's: ``g`` against its normal, times the body's gravity
+        scale.
     method : str
         The buoyancy method (see :data:`buoyancy.METHODS`), default ``"exact"``.
     damping : DampingCoefficients, optional
@@ -221,10 +291,8 @@ class FloatingBodies:
         damping: DampingCoefficients | None = None,
     ) -> None:
         world_water = _water_for_gravity(gravity)  # checks the gravity even when `water` is given
-        self.water = world_water if water is None else water
-        self.method = method
-        self.damping = DampingCoefficients() if damping is None else damping
-        self._bodies: dict[Hashable, _Body] = {}
+        self._controller = Controller(world_water if water is None else water, method, damping)
+        self._bodies = _Bodies()
 
     @classmethod
     def for_world(cls, world: Any, **kwargs: Any) -> FloatingBodies:
@@ -233,145 +301,162 @@ class FloatingBodies:
         Note that a ``PhysicsWorld()`` built without ``gravity=`` has none, and then nothing
         floats (``g = 0``).
         """
-        return cls(_vec(world.gravity), **kwargs)
+        return cls(_VEC(world.gravity), **kwargs)
 
     # --- settings -----------------------------------------------------------------------------
 
     @property
     def water(self) -> Water:
-        """The world's water."""
-        return self._water
+        """The world's water (still)."""
+        return self._controller.water
 
     @water.setter
     def water(self, water: Water) -> None:
-        if not isinstance(water, Water):
-            raise TypeError(f"water: expected a buoyancy.Water, got {type(water).__name__}")
-        self._water = water
+        self._controller.water = water
 
     @property
     def method(self) -> str:
-        """The world's buoyancy method."""
-        return self._method
+        """The world's buoyancy method (its canonical name)."""
+        return self._controller.method
 
     @method.setter
     def method(self, method: str) -> None:
-        self._method = _check_method(method)
+        self._controller.method = method
 
     @property
     def damping(self) -> DampingCoefficients:
         """The world's damping coefficients."""
-        return self._damping
+        return self._controller.damping
 
     @damping.setter
     def damping(self, damping: DampingCoefficients) -> None:
-        if not isinstance(damping, DampingCoefficients):
-            raise TypeError(f"damping: expected a buoyancy.DampingCoefficients, got {type(damping).__name__}")
-        self._damping = damping
+        self._controller.damping = damping
 
     # --- bodies -------------------------------------------------------------------------------
 
     def __len__(self) -> int:
-        return len(self._bodies)
+        return len(self._bodies.handles)
 
     def __contains__(self, body: object) -> bool:
-        return body in self._bodies
+        return body in self._bodies.index
 
     def __repr__(self) -> str:
-        return f"FloatingBodies({len(self)} bodies, water={self._water!r}, method={self._method!r})"
+        return f"FloatingBodies({len(self)} bodies, water={self.water!r}, method={self.method!r})"
 
     def register(
         self,
         body: Hashable,
-        mesh: Mesh,
+        mesh: Mesh | Sequence[Mesh | tuple[Mesh, npt.ArrayLike, npt.ArrayLike]],
         *,
         water: Water | None = None,
         method: str | None = None,
         damping: DampingCoefficients | None = None,
     ) -> None:
-        """Makes ``body`` (a ``rapier3d.RigidBodyHandle``) float with ``mesh``, a closed mesh in
-        the body's local frame (the frame of ``RigidBody.position``), e.g. the vertices and
-        faces of its trimesh collider. ``water``, ``method`` and ``damping`` override the
-        world's for this body. Registering a body again replaces its mesh and overrides (the
-        force already applied is kept track of)."""
-        if not isinstance(mesh, Mesh):
-            raise TypeError(f"mesh: expected a buoyancy.Mesh, got {type(mesh).__name__}")
-        if water is not None and not isinstance(water, Water):
-            raise TypeError(f"water: expected a buoyancy.Water, got {type(water).__name__}")
-        if damping is not None and not isinstance(damping, DampingCoefficients):
-            raise TypeError(f"damping: expected a buoyancy.DampingCoefficients, got {type(damping).__name__}")
-        method = None if method is None else _check_method(method)
-        old = self._bodies.get(body)
-        entry = _Body(mesh, water, method, damping)
-        if old is not None:
-            entry.applied_force, entry.applied_torque = old.applied_force, old.applied_torque
-        self._bodies[body] = entry
+        """Makes ``body`` (a ``rapier3d.RigidBodyHandle``) float.
+
+        ``mesh`` is a closed mesh in the body's local frame (the frame of ``RigidBody.position``),
+        e.g. the vertices and faces of its trimesh collider; or a list of parts, each such a mesh
+        or a tuple ``(mesh, position, quaternion)`` of a mesh in its own frame placed on the body
+        (``x_body = R @ x_mesh + position``, the quaternion ``(x, y, z, w)``), e.g. one per
+        collider with its ``position_wrt_parent``. ``water``, ``method`` and ``damping`` override
+        the world's for this body. Registering a body again replaces its meshes and overrides
+        (the force already applied is kept track of)."""
+        if not isinstance(mesh, (Mesh, list, tuple)):
+            raise TypeError(
+                f"mesh: expected a buoyancy.Mesh, or a list of meshes and (mesh, position, quaternion) "
+                f"parts, got {type(mesh).__name__}"
+            )
+        i = self._bodies.index.get(body)
+        if i is None:
+            self._controller.add(mesh, method=method, water=water, damping=damping)
+            self._bodies.add(body)
+        else:
+            self._controller.replace(i, mesh, method=method, water=water, damping=damping)
 
     def unregister(self, body: Hashable, bodies: Any) -> bool:
         """Stops ``body`` from floating and takes back the force and torque the adapter added to
-        it (``bodies``: the ``RigidBodySet``). Returns whether it was registered."""
-        entry = self._bodies.pop(body, None)
-        if entry is None:
+        it (``bodies``: the ``RigidBodySet``), even if it is not dynamic now (it is made dynamic
+        for the time of the addition, its type and sleep left as they were). Returns whether it
+        was registered."""
+        i = self._bodies.index.get(body)
+        if i is None:
             return False
-        if body in bodies:
+        force, torque = self._controller.remove(i)
+        self._bodies.remove(i)
+        if (force.any() or torque.any()) and body in bodies:
             rb = bodies[body]
-            rb.add_force(tuple(-entry.applied_force.astype(np.float64)), False)
-            rb.add_torque(tuple(-entry.applied_torque.astype(np.float64)), False)
+            body_type = rb.body_type
+            if body_type != _DYNAMIC:
+                rb.body_type = _DYNAMIC
+            rb.add_force(force.tolist(), False)
+            rb.add_torque(torque.tolist(), False)
+            if body_type != _DYNAMIC:
+                rb.body_type = body_type
         return True
 
     def forget_applied(self, body: Hashable) -> None:
         """Tells the adapter that the application reset the forces and torques of ``body``
-        (``reset_forces`` / ``reset_torques``), so that its own share is zero now."""
-        entry = self._bodies.get(body)
-        if entry is not None:
-            entry.applied_force = np.zeros(3, dtype=np.float32)
-            entry.applied_torque = np.zeros(3, dtype=np.float32)
+        (``reset_forces`` / ``reset_torques``), so that its share is zero now: the next
+        :meth:`apply` adds the whole share again."""
+        i = self._bodies.index.get(body)
+        if i is not None:
+            self._controller.forget_applied(i)
 
     def report(self, body: Hashable) -> FloatReport | None:
         """What was computed and applied for ``body`` at the last :meth:`apply` (``None`` if it
-        is not registered)."""
-        entry = self._bodies.get(body)
-        return None if entry is None else entry.report
+        is not registered); its ``outcome`` is ``"not_evaluated"`` before the first."""
+        i = self._bodies.index.get(body)
+        return None if i is None else self._controller.report(i)
+
+    def parts(self, body: Hashable) -> list[tuple[Mesh, np.ndarray, np.ndarray]] | None:
+        """The parts ``body`` floats with, each ``(mesh, position, quaternion)`` (its pose in the
+        body's frame); ``None`` if it is not registered."""
+        i = self._bodies.index.get(body)
+        return None if i is None else self._controller.parts(i)
 
     def mesh(self, body: Hashable) -> Mesh | None:
-        """The mesh ``body`` floats with (``None`` if it is not registered)."""
-        entry = self._bodies.get(body)
-        return None if entry is None else entry.mesh
+        """The mesh ``body`` floats with (``None`` if it is not registered); for a body of
+        several parts, see :meth:`parts` (a ``ValueError`` here)."""
+        parts = self.parts(body)
+        if parts is None:
+            return None
+        if len(parts) != 1:
+            raise ValueError(f"body: floats with {len(parts)} parts, not one mesh: see FloatingBodies.parts")
+        return parts[0][0]
 
     # --- stepping -----------------------------------------------------------------------------
 
     def apply(self, bodies: Any, dt: float) -> None:
         """Computes buoyancy and damping for every registered body at its current pose and
         velocity, and sets the body's share of the applied force and torque to it. Call it once
-        per step, before the world steps, with the step's ``dt`` (s; it only bounds the damping
-        impulse). ``bodies`` is the ``rapier3d.RigidBodySet`` (``world.rigid_bodies``). Bodies
-        no longer in ``bodies`` are forgotten; fixed, kinematic and disabled bodies get nothing.
-        """
-        dt = float(dt)
-        for handle in [h for h in self._bodies if h not in bodies]:
-            del self._bodies[handle]
-        for handle, entry in self._bodies.items():
-            rb = bodies[handle]
-            report, force, torque = self._evaluate(entry, rb, dt)
-            with np.errstate(over="ignore"):
-                force32 = force.astype(np.float32)
-                torque32 = torque.astype(np.float32)
-            if not (np.isfinite(force32).all() and np.isfinite(torque32).all()):
-                # Finite in float64 but beyond rapier's float32.
-                com = report.center_of_mass
-                report = FloatReport(center_of_buoyancy=com, center_of_mass=com, skipped=True)
-                force32 = torque32 = np.zeros(3, dtype=np.float32)
-            entry.report = report
-            delta_force = force32 - entry.applied_force
-            delta_torque = torque32 - entry.applied_torque
-            if not (delta_force.any() or delta_torque.any()):
-                continue
-            # Wake a sleeping body only for a change that matters (say the water moved).
-            scale = _norm(force) + float(rb.mass) * 9.81e-3 + 1e-30
-            wake = bool(_norm(delta_force) > 1e-3 * scale or _norm(delta_torque) > 1e-3 * (_norm(torque) + scale))
-            rb.add_force(tuple(delta_force.astype(np.float64)), wake)
-            rb.add_torque(tuple(delta_torque.astype(np.float64)), wake)
-            entry.applied_force = force32
-            entry.applied_torque = torque32
+        per step, before the world steps, with the step's ``dt`` (s), which the damping's
+        semi-implicit scheme needs. ``bodies`` is the ``rapier3d.RigidBodySet``
+        (``world.rigid_bodies``). Bodies no longer in ``bodies`` are forgotten; fixed, kinematic
+        and disabled bodies get nothing new (their share is left as it is)."""
+        if not self._bodies.handles:
+            return
+        try:
+            views, record, scalars = self._read(bodies)
+        except rapier3d.InvalidHandle:
+            self._forget_removed(bodies)
+            if not self._bodies.handles:
+                return
+            views, record, scalars = self._read(bodies)
+        add_forces, add_torques, wake = self._step(record, scalars, float(dt))
+        forces: np.ndarray = np.any(add_forces, axis=1)
+        torques: np.ndarray = np.any(add_torques, axis=1)
+        changed = np.flatnonzero(forces | torques).tolist()
+        if not changed:
+            return
+        force_rows, torque_rows, wake_flags = add_forces.tolist(), add_torques.tolist(), wake.tolist()
+        adds_force, adds_torque = forces.tolist(), torques.tolist()
+        for i in changed:
+            rb = views[i]
+            # rapier ignores a zero addition (and does not wake the body for it).
+            if adds_force[i]:
+                rb.add_force(force_rows[i], wake_flags[i])
+            if adds_torque[i]:
+                rb.add_torque(torque_rows[i], wake_flags[i])
 
     def step(self, world: Any) -> None:
         """``apply(world.rigid_bodies, world.integration_parameters.dt)``, then ``world.step()``,
@@ -379,77 +464,99 @@ class FloatingBodies:
         self.apply(world.rigid_bodies, world.integration_parameters.dt)
         world.step()
 
-    def _evaluate(self, entry: _Body, rb: Any, dt: float) -> tuple[FloatReport, np.ndarray, np.ndarray]:
-        """The report of one body and the force and torque to apply (about its world center of
-        mass); zero for non-dynamic bodies and anything non-finite."""
-        com = _vec(rb.center_of_mass)
-        zero = np.zeros(3)
-        if not rb.is_dynamic or not rb.is_enabled:
-            return FloatReport(center_of_buoyancy=com, center_of_mass=com), zero, zero
-        water = self._water if entry.water is None else entry.water
-        method = self._method if entry.method is None else entry.method
-        coefficients = self._damping if entry.damping is None else entry.damping
-        position = _vec(rb.translation)
-        rotation = _unit_quaternion(rb)
-        velocity = _vec(rb.linvel)
-        omega = _vec(rb.angvel)
-        try:
-            b = entry.mesh.buoyancy(position, rotation, water, method)
-            # The core takes the velocity of the mesh's own centroid (b.about, the torque point).
-            centroid = b.about
-            d = entry.mesh.damping(
-                position,
-                rotation,
-                velocity + _cross(omega, centroid - com),
-                omega,
-                water,
-                coefficients,
-                about=com,
-            )
-        except ValueError:
-            return FloatReport(center_of_buoyancy=com, center_of_mass=com, skipped=True), zero, zero
-        buoyancy_torque = b.torque + _cross(centroid - com, b.force)
-        damping_force, damping_torque = d.force, d.torque
+    def _forget_removed(self, bodies: Any) -> None:
+        """Forgets the bodies no longer in ``bodies`` (nothing to take back from them)."""
+        for handle in [h for h in self._bodies.handles if h not in bodies]:
+            i = self._bodies.index[handle]
+            self._controller.remove(i)
+            self._bodies.remove(i)
 
-        # Stability clamp of the explicit damping (see the module documentation).
-        mass = float(rb.mass)
-        relative_speed = _norm(velocity - coefficients.current)
-        impulse = _norm(damping_force) * dt
-        if mass > 0 and impulse > mass * relative_speed:
-            damping_force = damping_force * (mass * relative_speed / impulse)
-        spin = _norm(omega)
-        spin_change = _norm(_world_inverse_inertia(rb) @ damping_torque) * dt if damping_torque.any() else 0.0
-        if spin_change > spin:
-            damping_torque = damping_torque * (spin / spin_change)
+    def _read(self, bodies: Any) -> tuple[list[Any], np.ndarray, np.ndarray]:
+        """rapier's views of the registered bodies, their state (one :data:`_RECORD` per body:
+        float32s, as rapier has them) and their scalars (see the column numbers above); reads
+        again the mass properties that changed."""
+        registered = self._bodies
+        views = registered.look_up(bodies)
+        scalars = []
+        keys: list[bytes | None] = []
+        if _BYTES_LAYOUT_OK:
+            isometry, point, vec = _ISOMETRY_BYTES, _POINT_BYTES, _VEC_BYTES
+            chunks: list[bytes] = []
+            for rb in views:
+                chunks += (
+                    isometry(rb.position),
+                    point(rb.center_of_mass),
+                    vec(rb.linvel),
+                    vec(rb.angvel),
+                    vec(rb.user_force),
+                    vec(rb.user_torque),
+                )
+                scalars.append(
+                    (rb.mass, rb.gravity_scale, rb.is_dynamic and rb.is_enabled, rb.is_sleeping, rb.locked_axes.bits)
+                )
+                keys.append(rb.mass_properties.to_bytes())
+            record = np.frombuffer(b"".join(chunks), dtype=_RECORD)
+        else:  # a rapier3d whose to_bytes format differs
+            rows = []
+            for rb in views:
+                rows.append(
+                    (
+                        *_ROTATION(rb.rotation),
+                        *_VEC(rb.translation),
+                        *_POINT(rb.center_of_mass),
+                        *_VEC(rb.linvel),
+                        *_VEC(rb.angvel),
+                        *_VEC(rb.user_force),
+                        *_VEC(rb.user_torque),
+                    )
+                )
+                scalars.append(
+                    (rb.mass, rb.gravity_scale, rb.is_dynamic and rb.is_enabled, rb.is_sleeping, rb.locked_axes.bits)
+                )
+                keys.append(rb.mass_properties.to_bytes())
+            record = _records(np.array(rows, dtype=np.float32))
+        if keys != registered.keys:
+            registered.refresh(keys)
+        return views, record, np.array(scalars, dtype=np.float64)
 
-        force = b.force + damping_force
-        torque = buoyancy_torque + damping_torque
-        if not (np.isfinite(force).all() and np.isfinite(torque).all() and np.isfinite(b.center).all()):
-            return FloatReport(center_of_buoyancy=com, center_of_mass=com, skipped=True), zero, zero
-        report = FloatReport(
-            submerged_volume=b.volume,
-            center_of_buoyancy=b.center,
-            center_of_mass=com,
-            buoyancy_force=b.force,
-            buoyancy_torque=buoyancy_torque,
-            damping_force=damping_force,
-            damping_torque=damping_torque,
-            wetted_area=d.wetted_area,
+    def _step(self, record: np.ndarray, scalars: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """One step of the controller on the state :meth:`_read` read: rapier's effective inverse
+        masses and world inverse inertias (zero on locked axes) from the mass properties in each
+        body's frame."""
+        registered = self._bodies
+        free = ((scalars[:, _LOCKED].astype(np.int64)[:, None] & _LOCK_BITS) == 0).astype(np.float64)
+        quaternions = record["rotation"].astype(np.float64)
+        r = _rotation_matrices(quaternions)
+        # A body whose rotation is not finite gets no force (the controller says so); its inertia
+        # must still be finite.
+        r[~np.isfinite(r).all(axis=(1, 2))] = np.eye(3)
+        inverse_inertias = r @ registered.local_inverse_inertia @ r.transpose(0, 2, 1)
+        inverse_inertias *= free[:, None, 3:] * free[:, 3:, None]
+        return self._controller.step(
+            dt,
+            record["translation"],
+            quaternions,
+            record["center_of_mass"],
+            record["linvel"],
+            record["angvel"],
+            scalars[:, _MASS],
+            registered.inverse_mass[:, None] * free[:, :3],
+            inverse_inertias,
+            scalars[:, _GRAVITY_SCALE],
+            record["force"],
+            record["torque"],
+            scalars[:, _ACTIVE] != 0,
+            scalars[:, _SLEEPING] != 0,
         )
-        return report, force, torque
 
 
-_METHOD_PROBE: Mesh | None = None
-
-
-def _check_method(method: str) -> str:
-    """``method`` if the core knows it; ``ValueError`` listing the valid names otherwise."""
-    global _METHOD_PROBE
-    if not isinstance(method, str):
-        raise TypeError(f"method: expected a str, got {type(method).__name__}")
-    if _METHOD_PROBE is None:
-        from ._core import cube
-
-        _METHOD_PROBE = cube()
-    _METHOD_PROBE.buoyancy(method=method)  # raises ValueError("method: ...")
-    return method
+def _records(table: np.ndarray) -> np.ndarray:
+    """:data:`_RECORD` s from rows of float32: rotation (x, y, z, w), translation, center of mass,
+    velocities, force, torque."""
+    record = np.zeros(len(table), dtype=_RECORD)
+    start = 0
+    for name in ("rotation", "translation", "center_of_mass", "linvel", "angvel", "force", "torque"):
+        width = record.dtype[name].shape[0]
+        record[name] = table[:, start : start + width]
+        start += width
+    return record

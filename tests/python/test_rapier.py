@@ -1,11 +1,34 @@
-"""buoyancy.rapier with rapier's Python binding (the rapier3d package): the example settles
-within 1% of theory, the user's own forces are preserved, the damping clamp, far and deep
-bodies, bookkeeping."""
+"""buoyancy.rapier with rapier's Python binding (the rapier3d package).
+
+The behaviours of the Rust adapter, specified by crates/buoyancy-rapier/tests/*.rs, hold here too:
+each test below names the Rust test it ports. Both adapters are glue over the same controller
+(buoyancy.Controller), so the numbers are the same physics; the Python adapter takes meshes where
+the Rust one meshes rapier's colliders, so the shapes come from buoyancy.shapes or rapier's own
+``to_trimesh``.
+
+Not ported, because they test the Rust adapter's meshing of colliders, which the Python adapter
+does not do (it floats the meshes it is given, see FloatingBodies.register):
+
+* several_parts.rs ``repeated_collider_floats_once`` (the collider list of FloatOptions): its
+  Python counterpart is ``test_registering_again_replaces_the_meshes`` (a body floats once);
+* floating.rs ``per_body_water_and_errors``, its errors ``UnsupportedShape`` (a half-space
+  collider) and ``NothingToFloat`` (a body without colliders): their Python counterparts are the
+  TypeError and ValueError of ``register`` for something that is not a mesh or no mesh at all
+  (``test_bookkeeping_and_errors``).
+
+Plus what is the Python adapter's own: the example settles within 1% of theory, the report
+against the core at the body's pose, removed bodies, bad gravity, the module docstring, forces
+beyond float32, and reading rapier's state without its ``to_bytes`` format.
+"""
 
 from __future__ import annotations
 
 import importlib.util
+import itertools
+import math
 import sys
+import textwrap
+import warnings
 from typing import Any
 
 import numpy as np
@@ -24,7 +47,661 @@ except ImportError as error:  # not installed, or installed but not loadable her
         "scripts/test.sh installs it when the package index allows",
         allow_module_level=True,
     )
+import buoyancy.rapier
 from buoyancy.rapier import FloatingBodies, FloatReport
+
+DT = 1.0 / 60.0
+WATER_DENSITY = 1000.0
+DYNAMIC = rapier3d.RigidBodyType.DYNAMIC
+IDENTITY = (0.0, 0.0, 0.0, 1.0)
+
+
+def vec(v: Any) -> np.ndarray:
+    return np.array(tuple(v), dtype=np.float64)
+
+
+def f32(v: Any) -> np.ndarray:
+    return np.asarray(v, dtype=np.float64).astype(np.float32)
+
+
+class Pool:
+    """A rapier world (gravity −9.81 y, 60 Hz) with water at y = 0 (tests/common/mod.rs)."""
+
+    def __init__(self, **settings: Any) -> None:
+        self.world = rapier3d.PhysicsWorld(gravity=(0.0, -9.81, 0.0))
+        self.water = FloatingBodies.for_world(self.world, **settings)
+
+    def add(self, body: Any, colliders: Any, mesh: Any, **options: Any) -> Any:
+        """Adds a dynamic body that never sleeps, and makes it float with ``mesh``."""
+        colliders = colliders if isinstance(colliders, list) else [colliders]
+        handle = self.world.add_body(body.can_sleep(False), colliders)
+        self.water.register(handle, mesh, **options)
+        return handle
+
+    def apply(self) -> None:
+        self.water.apply(self.world.rigid_bodies, self.world.integration_parameters.dt)
+
+    def step(self) -> None:
+        self.water.step(self.world)
+
+    def run(self, seconds: float) -> None:
+        for _ in range(round(seconds / self.world.integration_parameters.dt)):
+            self.step()
+
+    def body(self, handle: Any) -> Any:
+        return self.world.rigid_bodies[handle]
+
+    def half_density_cube(self, y: float = 0.0) -> Any:
+        """A 1 m cube of density 500 kg/m³ centered at height ``y``: it floats half submerged."""
+        return self.add(
+            rapier3d.RigidBody.dynamic().translation((0.0, y, 0.0)),
+            rapier3d.Collider.cuboid(0.5, 0.5, 0.5).density(500.0),
+            buoyancy.shapes.cube(),
+        )
+
+    def own_wrench(self, handle: Any) -> tuple[np.ndarray, np.ndarray]:
+        """The application's own force and torque: rapier's stored ones minus the report's."""
+        r = self.water.report(handle)
+        assert r is not None
+        rb = self.body(handle)
+        return vec(rb.user_force) - f32(r.force), vec(rb.user_torque) - f32(r.torque)
+
+    def assert_equilibrium(self, handle: Any, size: float, what: str) -> None:
+        """Submerged volume = m/ρ within 0.5 %, the center of buoyancy on the vertical through the
+        center of mass within 1 % of ``size``, at rest."""
+        self.apply()
+        rb = self.body(handle)
+        report = self.water.report(handle)
+        expected = rb.mass / self.water.water.density
+        error = abs(report.submerged_volume - expected) / expected
+        assert error < 0.005, f"{what}: submerged {report.submerged_volume} m³ vs m/ρ = {expected} m³"
+        up = self.water.water.normal
+        offset = report.center_of_buoyancy - report.center_of_mass
+        horizontal = np.linalg.norm(offset - up * (up @ offset))
+        assert horizontal <= 0.01 * size, f"{what}: center of buoyancy {horizontal} m off the vertical"
+        speed, spin = np.linalg.norm(vec(rb.linvel)), np.linalg.norm(vec(rb.angvel))
+        assert speed < 0.02 and spin < 0.02, f"{what}: not at rest: v {speed}, ω {spin}"
+
+
+def tilt_degrees(rb: Any) -> float:
+    """The angle between the vertical and the body axis closest to it, degrees."""
+    r = np.asarray(rb.rotation.to_matrix(), dtype=np.float64).reshape(3, 3)
+    return math.degrees(math.acos(min(1.0, float(np.abs(r[1]).max()))))
+
+
+def model(name: str, radius: float) -> tuple[str, buoyancy.Mesh]:
+    """A sample mesh scaled to the bounding radius ``radius`` about its centroid, or the
+    procedural torus knot when the file is absent."""
+    path = find_sample_mesh(name, REPO)
+    if path is None:
+        label, mesh = "procedural torus knot", buoyancy.shapes.torus_knot(2, 3, 1.0, 0.3, 128, 12)
+    else:
+        label, mesh = name, buoyancy.load(path)
+    k = radius / mesh.bounding_radius
+    return label, buoyancy.Mesh((mesh.vertices - mesh.centroid) * k, mesh.faces)
+
+
+def trimesh(mesh: buoyancy.Mesh) -> Any:
+    return rapier3d.Collider.trimesh(mesh.vertices.astype(np.float32), mesh.faces.astype(np.uint32))
+
+
+def rapier_mesh(shape: Any, *subdivisions: int) -> buoyancy.Mesh:
+    """The mesh rapier makes of one of its shapes."""
+    vertices, faces = shape.to_trimesh(*subdivisions)
+    return buoyancy.Mesh(vertices, faces)
+
+
+def unit_cube(s: float) -> Any:
+    return rapier3d.Collider.cuboid(0.5, 0.5, 0.5).density(s * WATER_DENSITY)
+
+
+def pose(translation: tuple[float, float, float], *rotations: Any) -> Any:
+    rotation = rapier3d.Rotation3.identity()
+    for r in rotations:
+        rotation = rotation * r
+    return rapier3d.RigidBody.dynamic().position((translation, rotation))
+
+
+def axis_angle(axis: Any, angle: float) -> Any:
+    axis = np.asarray(axis, dtype=np.float64)
+    return rapier3d.Rotation3.from_axis_angle(tuple(axis / np.linalg.norm(axis)), angle)
+
+
+# --- floating.rs ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("s", [0.1, 0.9])
+def test_cube_upright_when_stable(s: float) -> None:
+    # floating.rs cube_upright_when_stable: GM = s/2 + 1/(12 s) − 1/2 > 0.
+    pool = Pool()
+    h = pool.add(pose((0.0, 0.8, 0.0), axis_angle((1, 0, 1), 0.1)), unit_cube(s), buoyancy.shapes.cube())
+    pool.run(40.0)
+    rb = pool.body(h)
+    assert s / 2 + 1 / (12 * s) - 0.5 > 0
+    assert tilt_degrees(rb) < 0.5, f"s = {s}: tilt {tilt_degrees(rb)}°"
+    draft = 0.5 - rb.translation.y
+    assert abs(draft - s) < 0.005 * max(s, 0.1) + 1e-4, f"s = {s}: draft {draft}"
+    pool.assert_equilibrium(h, 1.0, f"cube s = {s}")
+
+
+@pytest.mark.parametrize("s", [0.25, 0.5, 0.75])
+def test_cube_tips_when_upright_is_unstable(s: float) -> None:
+    # floating.rs cube_tips_when_upright_is_unstable.
+    assert s / 2 + 1 / (12 * s) - 0.5 < 0
+    pool = Pool()
+    h = pool.add(
+        pose((0.0, 0.5 - s, 0.0), axis_angle((1, 0, 0.3), math.radians(3))), unit_cube(s), buoyancy.shapes.cube()
+    )
+    pool.run(60.0)
+    assert tilt_degrees(pool.body(h)) > 10.0, f"s = {s}: still upright"
+    pool.assert_equilibrium(h, 1.0, f"tipped cube s = {s}")
+
+
+@pytest.mark.parametrize("s", [0.25, 0.5, 0.8])
+def test_sphere_at_the_analytic_cap_height(s: float) -> None:
+    # floating.rs sphere_at_the_analytic_cap_height: π d² (3R − d)/3 = s·4πR³/3.
+    radius = 0.5
+    pool = Pool()
+    h = pool.add(
+        rapier3d.RigidBody.dynamic().translation((0.0, 1.0, 0.0)),
+        rapier3d.Collider.ball(radius).density(s * WATER_DENSITY),
+        buoyancy.shapes.uv_sphere(radius, 96, 48),
+    )
+    pool.run(60.0)
+    target = 4.0 * s * radius**3
+    lo, hi = 0.0, 2.0 * radius
+    for _ in range(100):
+        d = (lo + hi) / 2
+        lo, hi = (d, hi) if d * d * (3 * radius - d) < target else (lo, d)
+    y = pool.body(h).translation.y
+    assert abs(y - (radius - lo)) < 0.01 * radius, f"s = {s}: center at {y} m, analytic {radius - lo} m"
+    pool.assert_equilibrium(h, 2 * radius, f"sphere s = {s}")
+
+
+def test_long_flat_box_floats_flat() -> None:
+    # floating.rs long_flat_box_floats_flat: 2 × 0.2 × 0.5 m, 500 kg/m³.
+    pool = Pool()
+    h = pool.add(
+        pose((0.0, 0.5, 0.0), axis_angle((1, 0, 0), 0.2), axis_angle((0, 0, 1), 0.1)),
+        rapier3d.Collider.cuboid(1.0, 0.1, 0.25).density(500.0),
+        buoyancy.shapes.cube().scaled((2.0, 0.2, 0.5)),
+    )
+    pool.run(60.0)
+    rb = pool.body(h)
+    up = np.asarray(rb.rotation.to_matrix(), dtype=np.float64).reshape(3, 3)[:, 1]
+    assert up[1] > min(0.9999, math.cos(math.radians(1))) or up[1] < -0.9998, f"thin axis not vertical: {up}"
+    assert abs(rb.translation.y) < 0.002
+    pool.assert_equilibrium(h, 2.0, "flat box")
+
+
+@pytest.mark.parametrize(("name", "s"), [("bunny.obj", 0.6), ("torusknot.obj", 0.4)])
+def test_bunny_and_torus_knot_equilibrium(name: str, s: float) -> None:
+    # floating.rs bunny_and_torus_knot_equilibrium.
+    label, mesh = model(name, 0.4)
+    pool = Pool()
+    h = pool.add(
+        rapier3d.RigidBody.dynamic().translation((0.0, 0.5, 0.0)), trimesh(mesh).density(s * WATER_DENSITY), mesh
+    )
+    pool.run(60.0)
+    pool.assert_equilibrium(h, 0.8, label)
+
+
+def test_denser_body_sinks() -> None:
+    # floating.rs denser_body_sinks, at the terminal velocity (s − 1)ρgV = c₁u + ½ρC_D u².
+    pool = Pool()
+    h = pool.add(rapier3d.RigidBody.dynamic().translation((0.0, 1.0, 0.0)), unit_cube(1.5), buoyancy.shapes.cube())
+    pool.run(10.0)
+    rb = pool.body(h)
+    assert rb.translation.y < -5.0
+    v = rb.linvel.y
+    assert v < 0 and math.isfinite(v)
+    net, c1, c2 = 0.5 * 1000.0 * 9.81, 1000.0, 500.0
+    u = (-c1 + math.sqrt(c1 * c1 + 4 * c2 * net)) / (2 * c2)
+    assert abs(v + u) < 0.05 * u, f"sinks at {-v} m/s, terminal {u} m/s"
+
+
+def test_spawned_deep_rises_and_settles() -> None:
+    # floating.rs spawned_deep_rises_and_settles.
+    pool = Pool()
+    h = pool.add(rapier3d.RigidBody.dynamic().translation((0.0, -10.0, 0.0)), unit_cube(0.9), buoyancy.shapes.cube())
+    highest = -math.inf
+    for _ in range(60 * 60):
+        pool.step()
+        y = pool.body(h).translation.y
+        highest = max(highest, y)
+        assert math.isfinite(y)
+    assert highest > -0.5 + 0.1, f"never reached the surface: highest {highest}"
+    y = pool.body(h).translation.y
+    assert abs(y - (0.5 - 0.9)) < 0.005, f"settled at {y}, tilt {tilt_degrees(pool.body(h))}°"
+    pool.assert_equilibrium(h, 1.0, "cube spawned deep")
+
+
+def test_extreme_spawns_stay_finite() -> None:
+    # floating.rs extreme_spawns_stay_finite: dropped fast, far above, very deep.
+    pool = Pool()
+    fast = pool.add(
+        rapier3d.RigidBody.dynamic().translation((0.0, 2.0, 0.0)).linvel((3.0, -80.0, 0.0)),
+        unit_cube(0.1),
+        buoyancy.shapes.cube(),
+    )
+    light_deep = pool.add(
+        rapier3d.RigidBody.dynamic().translation((5.0, -200.0, 0.0)).angvel((20.0, 0.0, 5.0)),
+        rapier3d.Collider.ball(0.05).density(10.0),
+        buoyancy.shapes.uv_sphere(0.05, 32, 16),
+    )
+    above = pool.add(
+        rapier3d.RigidBody.dynamic().translation((-5.0, 1000.0, 0.0)), unit_cube(0.5), buoyancy.shapes.cube()
+    )
+    for step in range(60 * 20):
+        pool.step()
+        if step == 60:
+            r = pool.water.report(above)
+            assert r.buoyancy_force.tolist() == [0, 0, 0] and r.damping_force.tolist() == [0, 0, 0]
+        for h in (fast, light_deep, above):
+            rb = pool.body(h)
+            state = np.concatenate([vec(rb.translation), vec(rb.linvel), vec(rb.angvel)])
+            assert np.isfinite(state).all()
+            assert np.linalg.norm(vec(rb.linvel)) < 200.0
+    assert abs(pool.body(fast).translation.y) < 1.0
+
+
+def test_user_thrust_survives_steps() -> None:
+    # floating.rs user_thrust_survives_steps, then unregister leaves exactly the user's forces.
+    pool = Pool()
+    h = pool.add(rapier3d.RigidBody.dynamic(), unit_cube(0.5), buoyancy.shapes.cube())
+    pool.run(5.0)
+    thrust, torque = np.array([200.0, 0.0, 0.0]), np.array([0.0, 5.0, 0.0])
+    pool.body(h).add_force(tuple(thrust), True)
+    pool.body(h).add_torque(tuple(torque), True)
+    x0 = pool.body(h).translation.x
+    for _ in range(600):
+        pool.step()
+        own_force, own_torque = pool.own_wrench(h)
+        assert np.linalg.norm(own_force - thrust) < 1e-3 * 200.0 + 1e-2, own_force
+        assert np.linalg.norm(own_torque - torque) < 1e-3 * 5.0 + 1e-2, own_torque
+    rb = pool.body(h)
+    assert rb.translation.x - x0 > 2.0 and rb.angvel.y > 0.0
+    assert pool.water.unregister(h, pool.world.rigid_bodies)
+    assert np.linalg.norm(vec(pool.body(h).user_force) - thrust) < 1e-2
+    assert np.linalg.norm(vec(pool.body(h).user_torque) - torque) < 1e-3
+
+
+def test_per_body_water_and_method() -> None:
+    # floating.rs per_body_water_and_errors (its errors: see the module docstring).
+    pool = Pool()
+    raised = buoyancy.Water(gravity=pool.water.water.gravity, level=2.0)
+    high = pool.add(
+        rapier3d.RigidBody.dynamic().translation((0.0, 3.0, 0.0)),
+        unit_cube(0.5),
+        buoyancy.shapes.cube(),
+        water=raised,
+        method="exact_surface",
+    )
+    low = pool.add(rapier3d.RigidBody.dynamic().translation((3.0, 1.0, 0.0)), unit_cube(0.5), buoyancy.shapes.cube())
+    pool.run(20.0)
+    assert abs(pool.body(high).translation.y - 2.0) < 0.005
+    assert abs(pool.body(low).translation.y) < 0.005
+
+
+def test_every_supported_shape_floats() -> None:
+    # floating.rs every_supported_shape_floats, with the meshes rapier makes of its shapes: they
+    # float with the volume rapier gives them (rapier's mass uses the exact round volumes).
+    hull_points = [(-0.4, -0.3, -0.3), (0.4, -0.3, -0.3), (0.0, 0.4, -0.3), (0.0, 0.0, 0.4)]
+    hull = rapier3d.SharedShape.convex_hull(hull_points)
+    compound = [
+        (((-0.4, 0.0, 0.0), IDENTITY), rapier3d.SharedShape.cuboid(0.2, 0.2, 0.2)),
+        (((0.4, 0.0, 0.0), IDENTITY), rapier3d.SharedShape.ball(0.25)),
+    ]
+    compound_parts = [
+        (buoyancy.shapes.cube().scaled(0.4), (-0.4, 0.0, 0.0), IDENTITY),
+        (rapier_mesh(rapier3d.Ball(0.25), 64, 32), (0.4, 0.0, 0.0), IDENTITY),
+    ]
+    shapes = [
+        ("cylinder", rapier3d.Collider.cylinder(0.3, 0.2), rapier_mesh(rapier3d.Cylinder(0.3, 0.2), 64)),
+        (
+            "capsule",
+            rapier3d.Collider.capsule_y(0.3, 0.2),
+            rapier_mesh(rapier3d.Capsule((0, -0.3, 0), (0, 0.3, 0), 0.2), 64, 32),
+        ),
+        ("cone", rapier3d.Collider.cone(0.3, 0.3), rapier_mesh(rapier3d.Cone(0.3, 0.3), 64)),
+        ("convex hull", rapier3d.Collider.convex_hull(hull_points), rapier_mesh(hull.as_convex_polyhedron())),
+        ("compound", rapier3d.Collider.compound(compound), compound_parts),
+    ]
+    for name, collider, mesh in shapes:
+        pool = Pool()
+        h = pool.add(rapier3d.RigidBody.dynamic().translation((0.0, 0.5, 0.0)), collider.density(600.0), mesh)
+        pool.run(40.0)
+        pool.apply()
+        rb = pool.body(h)
+        expected = rb.mass / 1000.0
+        submerged = pool.water.report(h).submerged_volume
+        assert abs(submerged - expected) < 0.01 * expected, f"{name}: {submerged} vs {expected}"
+        assert np.linalg.norm(vec(rb.linvel)) < 0.01, f"{name} still moves"
+
+
+def mechanical_energy(pool: Pool, handles: list[Any]) -> float:
+    """Kinetic + gravitational + hydrostatic (−ρ g V_sub h_B) energy of the bodies."""
+    pool.apply()
+    water = pool.water.water
+    up, level, g = water.normal, water.level, water.gravity
+    total = 0.0
+    for h in handles:
+        rb, r = pool.body(h), pool.water.report(h)
+        total += rb.kinetic_energy() + rb.mass * g * (up @ r.center_of_mass - level)
+        total -= water.density * g * r.submerged_volume * (up @ r.center_of_buoyancy - level)
+    return total
+
+
+def test_hundred_mixed_bodies_settle() -> None:
+    # floating.rs hundred_mixed_bodies_settle: 20 s without a NaN, the energy decays.
+    pool = Pool()
+    _, bunny = model("bunny.obj", 0.3)
+    seed = 12345
+
+    def random() -> float:
+        nonlocal seed
+        seed = (seed * 6364136223846793005 + 1442695040888963407) % 2**64
+        return (seed >> 11) / 2**53
+
+    cube, ball = buoyancy.shapes.cube(), rapier_mesh(rapier3d.Ball(0.25), 16, 8)
+    kinds = [
+        (rapier3d.Collider.cuboid(0.3, 0.2, 0.25), cube.scaled((0.6, 0.4, 0.5))),
+        (rapier3d.Collider.ball(0.25), ball),
+        (rapier3d.Collider.cylinder(0.2, 0.2), rapier_mesh(rapier3d.Cylinder(0.2, 0.2), 16)),
+        (
+            rapier3d.Collider.capsule_y(0.15, 0.15),
+            rapier_mesh(rapier3d.Capsule((0, -0.15, 0), (0, 0.15, 0), 0.15), 16, 8),
+        ),
+        (rapier3d.Collider.cone(0.25, 0.25), rapier_mesh(rapier3d.Cone(0.25, 0.25), 16)),
+        (
+            rapier3d.Collider.compound(
+                [
+                    (((-0.2, 0.0, 0.0), IDENTITY), rapier3d.SharedShape.cuboid(0.15, 0.15, 0.15)),
+                    (((0.2, 0.0, 0.0), IDENTITY), rapier3d.SharedShape.ball(0.15)),
+                ]
+            ),
+            [(cube.scaled(0.3), (-0.2, 0.0, 0.0), IDENTITY), (ball.scaled(0.6), (0.2, 0.0, 0.0), IDENTITY)],
+        ),
+        (trimesh(bunny), bunny),
+    ]
+    handles = []
+    for i in range(100):
+        s = 0.2 + 0.7 * random()
+        collider, mesh = kinds[i % 7]
+        position = ((i % 10) * 1.5 - 7.0, 1.0 + 4.0 * random(), (i // 10) * 1.5 - 7.0)
+        rotation = tuple(2.0 * random() for _ in range(3))
+        body = rapier3d.RigidBody.dynamic().translation(position).rotation(rotation).linvel((0.0, -3.0 * random(), 0.0))
+        handles.append(pool.add(body, collider.density(s * WATER_DENSITY), mesh))
+    energies = []
+    for second in range(1, 21):
+        pool.run(1.0)
+        for h in handles:
+            rb = pool.body(h)
+            assert np.isfinite(np.concatenate([vec(rb.translation), vec(rb.linvel), vec(rb.angvel)])).all(), second
+        if second >= 5:
+            energies.append(mechanical_energy(pool, handles))
+            for h in handles:
+                assert pool.water.report(h).submerged_volume > 0, f"a body is out of the water at {second} s"
+    assert all(b < a for a, b in itertools.pairwise(energies)), f"energy rose: {energies}"
+
+
+# --- applied_share.rs -------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "other",
+    [
+        rapier3d.RigidBodyType.KINEMATIC_POSITION_BASED,
+        rapier3d.RigidBodyType.KINEMATIC_VELOCITY_BASED,
+        rapier3d.RigidBodyType.FIXED,
+    ],
+)
+def test_body_type_round_trip_keeps_one_buoyancy(other: Any) -> None:
+    # applied_share.rs body_type_round_trip_keeps_one_buoyancy.
+    pool = Pool()
+    h = pool.half_density_cube(0.0)
+    pool.run(3.0)
+    pool.body(h).body_type = other
+    pool.run(0.5)
+    pool.body(h).body_type = DYNAMIC
+    pool.apply()
+    own_force, own_torque = pool.own_wrench(h)
+    assert np.linalg.norm(own_force) < 1.0 and np.linalg.norm(own_torque) < 1.0, (own_force, own_torque)
+    assert abs(pool.body(h).user_force.y - 4905.0) < 50.0
+    pool.run(3.0)
+    assert abs(pool.body(h).translation.y) < 0.05
+
+
+def test_unregister_while_kinematic_takes_the_share_off() -> None:
+    # applied_share.rs unregister_while_kinematic_takes_the_share_off.
+    pool = Pool()
+    h = pool.half_density_cube(0.0)
+    pool.run(1.0)
+    kinematic = rapier3d.RigidBodyType.KINEMATIC_POSITION_BASED
+    pool.body(h).body_type = kinematic
+    pool.step()
+    assert pool.water.unregister(h, pool.world.rigid_bodies)
+    assert pool.body(h).body_type == kinematic
+    pool.body(h).body_type = DYNAMIC
+    assert np.linalg.norm(vec(pool.body(h).user_force)) < 1e-2, pool.body(h).user_force
+    assert np.linalg.norm(vec(pool.body(h).user_torque)) < 1e-2
+
+
+def test_quarantined_body_gets_no_phantom_force() -> None:
+    # applied_share.rs quarantined_body_gets_no_phantom_force.
+    pool = Pool()
+    h = pool.half_density_cube(0.0)
+    pool.run(3.0)
+    pool.body(h).add_force((math.nan, 0.0, 0.0), True)
+    pool.step()
+    assert list(pool.world.quarantine.bodies) == [h]
+    pool.step()
+    assert not pool.body(h).is_enabled
+    assert np.linalg.norm(vec(pool.body(h).user_force)) < 1e-3
+    pool.body(h).is_enabled = True
+    pool.run(3.0)
+    own_force, _ = pool.own_wrench(h)
+    assert np.linalg.norm(own_force) < 1.0, own_force
+    assert abs(pool.body(h).translation.y) < 0.02
+
+
+# --- damping_stability.rs ---------------------------------------------------------------------
+
+
+def test_damping_keeps_the_drag_moment_and_its_line_of_action() -> None:
+    # damping_stability.rs damping_keeps_the_drag_moment_and_its_line_of_action.
+    pool = Pool()
+    h = pool.half_density_cube(0.0)
+    pool.body(h).linvel = (2.0, 0.0, 0.0)
+    pool.apply()
+    r = pool.water.report(h)
+    mesh = pool.water.mesh(h)
+    core = mesh.damping(
+        (0.0, pool.body(h).translation.y, 0.0), None, (2.0, 0.0, 0.0), None, pool.water.water, pool.water.damping
+    )
+    # Sideways drag on the wetted lower half of the front face: −2000 N, moment −500 N·m.
+    assert abs(core.force[0] + 2000.0) < 1.0 and abs(core.torque[2] + 500.0) < 1.0
+    assert r.damping_torque[2] < -0.8 * 500.0
+    s = r.damping_force[0] / core.force[0]
+    assert 0.8 < s <= 1 + 1e-9
+    assert np.linalg.norm(r.damping_torque - core.torque * s) < 1e-6 * 500.0
+
+    # Spinning in place at the floating height: the drag force of the paddling faces is kept.
+    pool = Pool()
+    h = pool.half_density_cube(0.0)
+    pool.body(h).angvel = (0.0, 0.0, 3.0)
+    pool.apply()
+    r = pool.water.report(h)
+    core = pool.water.mesh(h).damping(None, None, None, (0.0, 0.0, 3.0), pool.water.water, pool.water.damping)
+    assert np.linalg.norm(core.force) > 100.0
+    s = r.damping_torque[2] / core.torque[2]
+    assert 0.3 < s <= 1 + 1e-9
+    assert np.linalg.norm(r.damping_force - core.force * s) < 1e-6 * np.linalg.norm(core.force)
+
+
+def test_light_ball_rises_at_the_model_terminal_velocity() -> None:
+    # damping_stability.rs light_ball_rises_at_the_model_terminal_velocity.
+    pool = Pool()
+    mesh = buoyancy.shapes.uv_sphere(0.05, 32, 16)
+    h = pool.add(
+        rapier3d.RigidBody.dynamic().translation((0.0, -200.0, 0.0)), rapier3d.Collider.ball(0.05).density(10.0), mesh
+    )
+    pool.run(2.0)
+    y0 = pool.body(h).translation.y
+    pool.run(2.0)
+    speed = (pool.body(h).translation.y - y0) / 2.0
+    water = pool.water.water
+
+    def drag(v: float) -> float:
+        d = mesh.damping((0.0, -100.0, 0.0), None, (0.0, v, 0.0), None, water, pool.water.damping)
+        return float(d.force[1])
+
+    net = water.specific_weight * mesh.volume - pool.body(h).mass * water.gravity
+    assert net > 0
+    lo, hi = 0.0, 100.0
+    for _ in range(100):
+        v = (lo + hi) / 2
+        lo, hi = (v, hi) if -drag(v) < net else (lo, v)
+    assert abs(lo - 0.76) < 0.05, f"model terminal velocity {lo}"
+    assert abs(speed - lo) < 0.03 * lo, f"rises at {speed} m/s, the model's terminal velocity is {lo} m/s"
+
+
+# --- outcomes.rs ------------------------------------------------------------------------------
+
+
+def test_report_outcome_follows_the_body() -> None:
+    # outcomes.rs report_outcome_follows_the_body.
+    pool = Pool()
+    h = pool.half_density_cube(0.0)
+    assert pool.water.report(h).outcome == "not_evaluated"
+    pool.run(1.0)
+    report = pool.water.report(h)
+    assert report.outcome == "applied" and report.buoyancy_force[1] > 4000.0
+    held = vec(pool.body(h).user_force)
+
+    # Kinematic: nothing computed, the share left as it is.
+    pool.body(h).body_type = rapier3d.RigidBodyType.KINEMATIC_POSITION_BASED
+    pool.apply()
+    report = pool.water.report(h)
+    assert report.outcome == "inactive" and report.buoyancy_force[1] == 0.0
+    assert report.center_of_buoyancy.tolist() == report.center_of_mass.tolist()
+    pool.body(h).body_type = DYNAMIC
+    assert vec(pool.body(h).user_force).tolist() == held.tolist()
+
+    # A NaN velocity: no force, the share taken back.
+    pool.body(h).linvel = (math.nan, 0.0, 0.0)
+    pool.apply()
+    report = pool.water.report(h)
+    assert report.outcome == "not_finite" and report.buoyancy_force[1] == 0.0
+    assert np.linalg.norm(vec(pool.body(h).user_force)) < 1e-3
+
+    # Finite again: the whole share comes back.
+    pool.body(h).linvel = (0.0, 0.0, 0.0)
+    pool.apply()
+    assert pool.water.report(h).outcome == "applied"
+    assert abs(pool.body(h).user_force.y - held[1]) < 0.01 * held[1]
+
+
+# --- several_parts.rs -------------------------------------------------------------------------
+
+
+def test_registering_again_replaces_the_meshes() -> None:
+    # The Python counterpart of several_parts.rs repeated_collider_floats_once: a body
+    # registered twice floats once, with its last meshes.
+    pool = Pool()
+    h = pool.half_density_cube(0.0)
+    pool.water.register(h, buoyancy.shapes.cube())
+    pool.apply()
+    assert len(pool.water) == 1 and len(pool.water.parts(h)) == 1
+    assert pool.water.report(h).submerged_volume == pytest.approx(0.5, abs=1e-9)
+    assert pool.body(h).user_force.y == pytest.approx(4905.0, rel=1e-6)
+
+
+def test_angular_damping_of_a_body_split_into_parts() -> None:
+    # several_parts.rs angular_damping_of_a_body_split_into_parts: a cube split into 8 parts is
+    # damped like the cube.
+    pool = Pool(damping=buoyancy.DampingCoefficients(0.0, 0.0, 0.1, 0.1))
+    omega = (0.3, 1.0, -0.5)
+    whole = pool.add(
+        rapier3d.RigidBody.dynamic().translation((0.0, -5.0, 0.0)).angvel(omega), unit_cube(1.0), buoyancy.shapes.cube()
+    )
+    corners = [tuple(0.25 if i & bit else -0.25 for bit in (1, 2, 4)) for i in range(8)]
+    split = pool.add(
+        rapier3d.RigidBody.dynamic().translation((5.0, -5.0, 0.0)).angvel(omega),
+        rapier3d.Collider.compound(
+            [((c, IDENTITY), rapier3d.SharedShape.cuboid(0.25, 0.25, 0.25)) for c in corners]
+        ).density(1000.0),
+        [(buoyancy.shapes.cube().scaled(0.5), c, IDENTITY) for c in corners],
+    )
+    pool.apply()
+    a, b = pool.water.report(whole).damping_torque, pool.water.report(split).damping_torque
+    assert np.linalg.norm(a) > 10.0, a
+    assert np.linalg.norm(a - b) < 1e-4 * np.linalg.norm(a), (a, b)
+
+
+# --- sleeping.rs ------------------------------------------------------------------------------
+
+
+def test_sleeping_body_wakes_for_a_slowly_rising_tide() -> None:
+    # sleeping.rs sleeping_body_wakes_for_a_slowly_rising_tide: 0.5 mm per step, each step's
+    # change far below the waking threshold.
+    pool = Pool()
+    h = pool.world.add_body(rapier3d.RigidBody.dynamic(), [rapier3d.Collider.cuboid(0.5, 0.5, 0.5).density(500.0)])
+    pool.water.register(h, buoyancy.shapes.cube())
+    pool.run(10.0)
+    assert pool.body(h).is_sleeping, "the cube should have fallen asleep"
+    gravity, level = pool.water.water.gravity, 0.0
+    for _ in range(600):
+        level += 0.0005
+        pool.water.water = buoyancy.Water(gravity=gravity, level=level)
+        pool.step()
+    pool.run(5.0)
+    y = pool.body(h).translation.y
+    assert abs(y - level) < 0.02, f"the cube is at {y} m, the water at {level} m"
+
+
+# --- world_water.rs ---------------------------------------------------------------------------
+
+
+def test_water_is_up_against_gravity() -> None:
+    water = FloatingBodies((0.0, 0.0, -3.0)).water
+    assert water.normal.tolist() == [0.0, 0.0, 1.0] and water.gravity == 3.0
+    water = FloatingBodies((0.0, -9.81, 0.0)).water
+    assert water.normal[1] == 1.0 and abs(water.gravity - 9.81) < 1e-6
+
+
+def test_zero_gravity_keeps_y_up() -> None:
+    water = FloatingBodies((0.0, 0.0, 0.0)).water
+    assert water.normal[1] == 1.0 and water.gravity == 0.0
+
+
+@pytest.mark.parametrize(
+    "gravity, match",
+    [
+        ((0.0, float("nan"), 0.0), r"^gravity: has a NaN or infinite component: \(0.0, nan, 0.0\)$"),
+        ((0.0, -float("inf"), 0.0), "^gravity: has a NaN or infinite component"),
+        ((float("inf"), -9.81, 0.0), "^gravity: has a NaN or infinite component"),
+        ((1.5e308, 1.5e308, 0.0), "^gravity: too large, its magnitude overflows"),
+        ((0.0, -9.81), r"^gravity: expected 3 numbers, the gravity vector in m/s², got shape \(2,\)$"),
+        (-9.81, r"^gravity: expected 3 numbers, the gravity vector in m/s², got shape \(\)$"),
+        ("down", "^gravity: expected 3 numbers, the gravity vector in m/s²"),
+    ],
+)
+def test_invalid_gravity_is_a_value_error_naming_it(gravity: Any, match: str) -> None:
+    # world_water.rs non_finite_gravity_is_an_error, and shapes that are not a vector.
+    with pytest.raises(ValueError, match=match):
+        FloatingBodies(gravity)
+    # Even when the water is given, so that gravity is not used to build it.
+    with pytest.raises(ValueError, match=match):
+        FloatingBodies(gravity, water=buoyancy.Water())
+    world = rapier3d.PhysicsWorld(gravity=(0.0, -9.81, 0.0))
+    if np.shape(gravity) == (3,):  # a world's gravity is always a vector (of float32)
+        world.gravity = tuple(gravity)
+        with pytest.raises(ValueError, match="^gravity: "):
+            FloatingBodies.for_world(world)
+
+
+# --- the Python adapter's own -----------------------------------------------------------------
 
 
 def load_example() -> Any:
@@ -52,55 +729,42 @@ def test_example_settles_within_one_percent_of_theory() -> None:
         assert r.residual_speed < 0.01, f"{r.name} still moves at {r.residual_speed} m/s"
 
 
-def world_with_cube(y: float = 1.0, density: float = 500.0, **body: Any) -> tuple[Any, Any]:
-    world = rapier3d.PhysicsWorld(gravity=(0.0, -9.81, 0.0))
-    builder = rapier3d.RigidBody.dynamic().translation((0.0, y, 0.0)).can_sleep(False)
-    for name, value in body.items():
-        builder = getattr(builder, name)(value)
-    handle = world.add_body(builder, [rapier3d.Collider.cuboid(0.5, 0.5, 0.5).density(density)])
-    return world, handle
-
-
-def vec(v: Any) -> np.ndarray:
-    return np.array(tuple(v), dtype=np.float64)
-
-
-def test_the_users_own_forces_are_preserved() -> None:
-    world, h = world_with_cube(y=0.3)
-    fb = FloatingBodies.for_world(world)
-    fb.register(h, buoyancy.shapes.cube())
+def test_the_users_own_forces_are_preserved_and_reset() -> None:
+    pool = Pool()
+    h = pool.half_density_cube(0.3)
     thrust, twist = np.array([30.0, 0.0, -20.0]), np.array([0.0, 5.0, 0.0])
-    rb = world.rigid_bodies[h]
-    rb.add_force(tuple(thrust))
-    rb.add_torque(tuple(twist))
+    pool.body(h).add_force(tuple(thrust))
+    pool.body(h).add_torque(tuple(twist))
     for _ in range(120):
-        fb.apply(world.rigid_bodies, world.integration_parameters.dt)
-        report = fb.report(h)
-        assert isinstance(report, FloatReport) and not report.skipped
-        rb = world.rigid_bodies[h]
+        pool.apply()
+        report = pool.water.report(h)
+        assert isinstance(report, FloatReport) and report.outcome == "applied"
+        rb = pool.body(h)
         scale = 1e-5 * (np.linalg.norm(report.force) + 1)
         np.testing.assert_allclose(vec(rb.user_force), thrust + report.force, atol=scale)
         np.testing.assert_allclose(vec(rb.user_torque), twist + report.torque, atol=scale)
-        world.step()
-    # The thrust kept pushing the cube along x and -z all along.
-    position = vec(world.rigid_bodies[h].translation)
+        pool.world.step()
+    position = vec(pool.body(h).translation)
     assert position[0] > 0.05 and position[2] < -0.03
     # Resetting: the adapter is told, and adds its whole share again.
-    world.rigid_bodies[h].reset_forces()
-    world.rigid_bodies[h].reset_torques()
-    fb.forget_applied(h)
-    fb.apply(world.rigid_bodies, world.integration_parameters.dt)
-    np.testing.assert_allclose(vec(world.rigid_bodies[h].user_force), fb.report(h).force, rtol=1e-5, atol=1e-3)
+    pool.body(h).reset_forces()
+    pool.body(h).reset_torques()
+    pool.water.forget_applied(h)
+    pool.apply()
+    np.testing.assert_allclose(vec(pool.body(h).user_force), pool.water.report(h).force, rtol=1e-5, atol=1e-3)
     # Unregistering takes the adapter's share back off, leaving the user's.
-    world.rigid_bodies[h].add_force(tuple(thrust))
-    assert fb.unregister(h, world.rigid_bodies) and h not in fb and len(fb) == 0
-    np.testing.assert_allclose(vec(world.rigid_bodies[h].user_force), thrust, atol=1e-2)
-    assert not fb.unregister(h, world.rigid_bodies)
+    pool.body(h).add_force(tuple(thrust))
+    assert pool.water.unregister(h, pool.world.rigid_bodies) and h not in pool.water and len(pool.water) == 0
+    np.testing.assert_allclose(vec(pool.body(h).user_force), thrust, atol=1e-2)
+    assert not pool.water.unregister(h, pool.world.rigid_bodies)
 
 
 def test_report_matches_the_core_at_the_body_pose() -> None:
     # A rotated, moving cube whose center of mass is off the mesh centroid (an extra mass).
-    world, h = world_with_cube(y=-0.2, rotation=(0.3, 0.2, 0.1), linvel=(0.5, -1.0, 0.2), angvel=(0.4, 0.0, -0.6))
+    world = rapier3d.PhysicsWorld(gravity=(0.0, -9.81, 0.0))
+    builder = rapier3d.RigidBody.dynamic().translation((0.0, -0.2, 0.0)).rotation((0.3, 0.2, 0.1))
+    builder = builder.linvel((0.5, -1.0, 0.2)).angvel((0.4, 0.0, -0.6)).can_sleep(False)
+    h = world.add_body(builder, [rapier3d.Collider.cuboid(0.5, 0.5, 0.5).density(500.0)])
     rb = world.rigid_bodies[h]
     rb.set_additional_mass_properties(rapier3d.MassProperties((0.2, -0.1, 0.0), 300.0, (10.0, 10.0, 10.0)))
     rb.recompute_mass_properties_from_colliders(world.colliders)
@@ -118,43 +782,59 @@ def test_report_matches_the_core_at_the_body_pose() -> None:
     np.testing.assert_allclose(report.buoyancy_torque, b.torque, rtol=1e-9, atol=1e-6)
     np.testing.assert_allclose(report.center_of_mass, com)
     assert report.submerged_volume == pytest.approx(b.volume, rel=1e-12)
-    # Light damping: no clamp, so the report is the core's damping at the centroid's velocity.
-    v, w = vec(rb.linvel), vec(rb.angvel)
-    centroid = cube.buoyancy(vec(rb.translation), q / np.linalg.norm(q)).about
-    d = cube.damping(
-        vec(rb.translation), q / np.linalg.norm(q), v + np.cross(w, centroid - com), w, fb.water, fb.damping, about=com
-    )
-    np.testing.assert_allclose(report.damping_force, d.force, rtol=1e-9)
-    np.testing.assert_allclose(report.damping_torque, d.torque, rtol=1e-9, atol=1e-9)
-    assert report.damping_force @ v < 0
+    # The damping opposes the motion (semi-implicit: not the model's explicit value).
+    assert report.damping_force @ vec(rb.linvel) < 0
 
 
-def test_damping_is_clamped_to_stop_the_motion_at_most() -> None:
-    # A neutrally buoyant cube under water moving down fast, with a huge drag: unclamped, one
-    # step of drag would throw it upwards; clamped, it can at most stop.
-    world, h = world_with_cube(y=-3.0, density=1000.0, linvel=(0.0, -5.0, 0.0), angvel=(0.0, 4.0, 0.0))
-    fb = FloatingBodies.for_world(world, damping=buoyancy.DampingCoefficients(linear_drag=1e7, angular_drag_linear=1e5))
-    fb.register(h, buoyancy.shapes.cube())
-    dt = world.integration_parameters.dt
-    mass = world.rigid_bodies[h].mass
-    fb.step(world)
-    report = fb.report(h)
-    assert np.linalg.norm(report.damping_force) * dt <= mass * 5.0 * (1 + 1e-9)
-    assert report.damping_force[1] > 0.5 * mass * 5.0 / dt  # it did brake hard
-    rb = world.rigid_bodies[h]
-    assert -5.0 < rb.linvel.y <= 0.05 and abs(rb.angvel.y) <= 4.0 * 1.01
-    assert np.isfinite(vec(rb.translation)).all()
+@pytest.mark.parametrize(
+    ("damping", "linvel", "angvel"),
+    [((1e7, 0.0), -5.0, 0.0), ((0.0, 1e5), 0.0, 4.0)],
+    ids=["moving", "spinning"],
+)
+def test_stiff_damping_does_not_overshoot(damping: tuple[float, float], linvel: float, angvel: float) -> None:
+    # A neutrally buoyant cube under water moving down fast, or spinning fast, with a huge drag:
+    # explicit, one step of drag would throw it back; semi-implicit, it can at most stop.
+    linear_drag, angular_drag = damping
+    coefficients = buoyancy.DampingCoefficients(linear_drag=linear_drag, angular_drag_linear=angular_drag)
+    pool = Pool(damping=coefficients)
+    body = rapier3d.RigidBody.dynamic().translation((0.0, -3.0, 0.0))
+    h = pool.add(body.linvel((0.0, linvel, 0.0)).angvel((0.0, angvel, 0.0)), unit_cube(1.0), buoyancy.shapes.cube())
+    for _ in range(3):
+        pool.step()
+        rb = pool.body(h)
+        assert linvel <= rb.linvel.y <= 1e-6 and -1e-6 <= rb.angvel.y <= angvel * 1.001, (rb.linvel, rb.angvel)
+    report = pool.water.report(h)
+    assert np.isfinite(report.force).all() and np.isfinite(report.torque).all()
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="the core's semi-implicit damping has one rate for the whole wrench: with a linear and an "
+    "angular damping of very different stiffness, the stiffer one overshoots (the spin flips sign "
+    "each step, 4 → −8.9 → 5.7 → −6.9 rad/s here)",
+)
+def test_stiff_mixed_damping_does_not_overshoot() -> None:
+    pool = Pool(damping=buoyancy.DampingCoefficients(linear_drag=1e7, angular_drag_linear=1e5))
+    body = rapier3d.RigidBody.dynamic().translation((0.0, -3.0, 0.0)).linvel((0.0, -5.0, 0.0))
+    h = pool.add(body.angvel((0.0, 4.0, 0.0)), unit_cube(1.0), buoyancy.shapes.cube())
+    for _ in range(3):
+        pool.step()
+        rb = pool.body(h)
+        assert -5.0 <= rb.linvel.y <= 1e-6 and 0.0 <= rb.angvel.y <= 4.0 * 1.001, (rb.linvel, rb.angvel)
 
 
 @pytest.mark.parametrize("y", [1e6, 50.0, -50.0, -1e5])
 def test_no_nan_far_above_or_deep_below(y: float) -> None:
-    world, h = world_with_cube(y=y, linvel=(0.0, -2.0, 0.0), angvel=(0.1, 0.2, 0.3))
-    fb = FloatingBodies.for_world(world)
-    fb.register(h, buoyancy.shapes.cube())
+    pool = Pool()
+    h = pool.add(
+        rapier3d.RigidBody.dynamic().translation((0.0, y, 0.0)).linvel((0.0, -2.0, 0.0)).angvel((0.1, 0.2, 0.3)),
+        unit_cube(0.5),
+        buoyancy.shapes.cube(),
+    )
     for _ in range(5):
-        fb.step(world)
-    report, rb = fb.report(h), world.rigid_bodies[h]
-    assert not report.skipped
+        pool.step()
+    report, rb = pool.water.report(h), pool.body(h)
+    assert report.outcome == "applied"
     for value in (report.force, report.torque, report.center_of_buoyancy, vec(rb.user_force), vec(rb.translation)):
         assert np.isfinite(value).all()
     if y > 0:
@@ -162,8 +842,8 @@ def test_no_nan_far_above_or_deep_below(y: float) -> None:
         assert np.linalg.norm(vec(rb.user_force)) == 0
     else:
         assert report.submerged_volume == pytest.approx(1.0, rel=1e-9)
-        assert report.buoyancy_force[1] == pytest.approx(1000.0 * fb.water.gravity, rel=1e-9)
-        assert fb.water.gravity == pytest.approx(9.81, rel=1e-6)  # rapier's float32 gravity
+        assert report.buoyancy_force[1] == pytest.approx(1000.0 * pool.water.water.gravity, rel=1e-9)
+        assert pool.water.water.gravity == pytest.approx(9.81, rel=1e-6)  # rapier's float32 gravity
 
 
 def test_z_up_world_and_per_body_overrides() -> None:
@@ -185,8 +865,9 @@ def test_z_up_world_and_per_body_overrides() -> None:
 
 
 def test_bookkeeping_and_errors() -> None:
-    world, h = world_with_cube(y=-0.2)
-    fixed = world.add_body(
+    pool = Pool()
+    h = pool.half_density_cube(-0.2)
+    fixed = pool.world.add_body(
         rapier3d.RigidBody.fixed().translation((3.0, -0.2, 0.0)), [rapier3d.Collider.cuboid(0.5, 0.5, 0.5)]
     )
     fb = FloatingBodies()
@@ -194,56 +875,51 @@ def test_bookkeeping_and_errors() -> None:
     fb.register(h, cube)
     fb.register(fixed, cube)
     assert len(fb) == 2 and h in fb and fb.mesh(h) is cube
-    assert fb.report(h).submerged_volume == 0 and not fb.report(h).skipped
+    assert fb.report(h).submerged_volume == 0 and fb.report(h).outcome == "not_evaluated"
     assert "2 bodies" in repr(fb)
-    fb.step(world)
-    assert fb.report(fixed).force.tolist() == [0, 0, 0] and not fb.report(fixed).skipped
+    fb.step(pool.world)
+    assert fb.report(fixed).force.tolist() == [0, 0, 0] and fb.report(fixed).outcome == "inactive"
     assert fb.report(h).submerged_volume == pytest.approx(0.7)
     # Removed bodies are forgotten.
-    world.remove_body(h)
-    fb.step(world)
-    assert h not in fb and len(fb) == 1 and fb.report(h) is None
+    pool.world.remove_body(h)
+    fb.step(pool.world)
+    assert h not in fb and len(fb) == 1 and fb.report(h) is None and fb.mesh(h) is None
+    assert fb.report(fixed).outcome == "inactive"
     with pytest.raises(TypeError, match="^mesh: expected a buoyancy.Mesh"):
         fb.register(fixed, "cube")  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="^parts: a floating body needs at least one mesh"):
+        fb.register(fixed, [])
+    with pytest.raises(TypeError, match=r"^parts\[1\]: expected a Mesh or a \(mesh, position, quaternion\)"):
+        fb.register(fixed, [cube, "cube"])  # type: ignore[list-item]
     with pytest.raises(ValueError, match="^method: .*exact"):
         fb.register(fixed, cube, method="bogus")
     with pytest.raises(ValueError, match="^method:"):
         FloatingBodies(method="bogus")
+    with pytest.raises(ValueError, match="^method:"):
+        fb.method = "bogus"
     with pytest.raises(TypeError, match="^damping:"):
         FloatingBodies(damping=buoyancy.Water())  # type: ignore[arg-type]
+    with pytest.raises(TypeError, match="^water: expected a buoyancy.Water, got str"):
+        fb.water = "sea"  # type: ignore[assignment]
+    with pytest.raises(ValueError, match="^water: .*waves"):
+        fb.register(fixed, cube, water=buoyancy.Water(waves=buoyancy.AiryWave(0.1, 5.0)))
     with pytest.raises(ValueError, match="^gravity:"):
         FloatingBodies((0.0, float("nan"), 0.0))
-
-
-@pytest.mark.parametrize(
-    "gravity, match",
-    [
-        ((0.0, float("nan"), 0.0), r"^gravity: has a NaN or infinite component: \(0.0, nan, 0.0\)$"),
-        ((0.0, -float("inf"), 0.0), "^gravity: has a NaN or infinite component"),
-        ((1.5e308, 1.5e308, 0.0), "^gravity: too large, its magnitude overflows"),
-        ((0.0, -9.81), r"^gravity: expected 3 numbers, the gravity vector in m/s², got shape \(2,\)$"),
-        (-9.81, r"^gravity: expected 3 numbers, the gravity vector in m/s², got shape \(\)$"),
-        ("down", "^gravity: expected 3 numbers, the gravity vector in m/s²"),
-    ],
-)
-def test_invalid_gravity_is_a_value_error_naming_it(gravity: Any, match: str) -> None:
-    with pytest.raises(ValueError, match=match):
-        FloatingBodies(gravity)
-    # Even when the water is given, so that gravity is not used to build it.
-    with pytest.raises(ValueError, match=match):
-        FloatingBodies(gravity, water=buoyancy.Water())
-    world = rapier3d.PhysicsWorld(gravity=(0.0, -9.81, 0.0))
-    if np.shape(gravity) == (3,):  # a world's gravity is always a vector (of float32)
-        world.gravity = tuple(gravity)
-        with pytest.raises(ValueError, match="^gravity: "):
-            FloatingBodies.for_world(world)
+    # Settings read back.
+    fb.method = "ExactSurface"
+    assert fb.method == "exact_surface"
+    fb.damping = buoyancy.DampingCoefficients.off()
+    assert fb.damping.is_off
+    # A body of several parts.
+    parts = [(cube, (0.0, 0.5, 0.0), IDENTITY), cube.scaled(0.5)]
+    fb.register(fixed, parts)
+    assert [p[0] for p in fb.parts(fixed)] == [cube, cube.scaled(0.5)]
+    assert fb.parts(fixed)[0][1].tolist() == [0.0, 0.5, 0.0] and fb.parts(fixed)[0][2].tolist() == list(IDENTITY)
+    with pytest.raises(ValueError, match="^body: floats with 2 parts"):
+        fb.mesh(fixed)
 
 
 def test_module_docstring_example_runs() -> None:
-    import textwrap
-
-    import buoyancy.rapier
-
     after = (buoyancy.rapier.__doc__ or "").split("floats half submerged)::\n", 1)[1]
     lines = []
     for line in after.splitlines():
@@ -258,15 +934,77 @@ def test_module_docstring_example_runs() -> None:
     assert abs(world.rigid_bodies[crate].translation.y) < 0.01
 
 
-def test_beyond_float32_is_skipped_not_infinite() -> None:
+def test_beyond_float32_is_not_finite() -> None:
     # Finite in float64, but water of 1e38 kg/m³ makes forces beyond rapier's float32.
-    world, h = world_with_cube(y=-0.2)
-    fb = FloatingBodies.for_world(world, water=buoyancy.Water(density=1e38))
-    fb.register(h, buoyancy.shapes.cube())
-    fb.apply(world.rigid_bodies, 1 / 60)
-    assert fb.report(h).skipped
-    assert vec(world.rigid_bodies[h].user_force).tolist() == [0, 0, 0]
+    pool = Pool(water=buoyancy.Water(density=1e38))
+    h = pool.half_density_cube(-0.2)
+    pool.apply()
+    assert pool.water.report(h).outcome == "not_finite"
+    assert vec(pool.body(h).user_force).tolist() == [0, 0, 0]
     # Back to normal water: the body floats again.
-    fb.water = buoyancy.Water(gravity=9.81)
-    fb.apply(world.rigid_bodies, 1 / 60)
-    assert not fb.report(h).skipped and world.rigid_bodies[h].user_force.y > 0
+    pool.water.water = buoyancy.Water(gravity=9.81)
+    pool.apply()
+    assert pool.water.report(h).outcome == "applied" and pool.body(h).user_force.y > 0
+
+
+def test_skipped_is_deprecated() -> None:
+    pool = Pool()
+    h = pool.half_density_cube(0.0)
+    pool.apply()
+    with pytest.warns(DeprecationWarning, match="outcome"):
+        assert pool.water.report(h).skipped is False
+
+
+def test_state_read_without_the_bytes_format(monkeypatch: pytest.MonkeyPatch) -> None:
+    # rapier3d's to_bytes format is checked at import; were it to differ, the state is read with
+    # to_tuple instead, to the same forces.
+    assert buoyancy.rapier._BYTES_LAYOUT_OK
+
+    def forces() -> list[list[float]]:
+        pool = Pool()
+        handles = [pool.half_density_cube(0.1 * k) for k in range(3)]
+        pool.body(handles[1]).angvel = (0.3, -0.2, 0.5)
+        pool.body(handles[2]).linvel = (1.0, 0.5, 0.0)
+        pool.body(handles[2]).locked_axes = rapier3d.LockedAxes.ROTATION_LOCKED_X
+        pool.run(0.5)
+        return [vec(pool.body(h).user_force).tolist() + vec(pool.body(h).user_torque).tolist() for h in handles]
+
+    with_bytes = forces()
+    monkeypatch.setattr(buoyancy.rapier, "_BYTES_LAYOUT_OK", False)
+    assert forces() == with_bytes
+
+
+def test_locked_axes_and_mass_changes_are_read() -> None:
+    # The effective inverse mass and inertia are rapier's (zero on locked axes), read again when
+    # the locked axes or the mass properties change: they set the semi-implicit damping's rate.
+    pool = Pool()
+    h = pool.half_density_cube(0.0)
+
+    def damping_torque(**change: Any) -> float:
+        rb = pool.body(h)
+        rb.reset_forces()
+        rb.reset_torques()
+        pool.water.forget_applied(h)
+        for name, value in change.items():
+            setattr(rb, name, value)
+        rb.angvel = (0.0, 0.0, 3.0)
+        pool.apply()
+        return float(pool.water.report(h).damping_torque[2])
+
+    free = damping_torque()
+    assert free < 0
+    assert damping_torque(locked_axes=rapier3d.LockedAxes.ROTATION_LOCKED) != pytest.approx(free, rel=1e-6)
+    assert damping_torque(locked_axes=rapier3d.LockedAxes.empty()) == pytest.approx(free, rel=1e-12)
+    pool.body(h).set_additional_mass(5000.0)
+    pool.body(h).recompute_mass_properties_from_colliders(pool.world.colliders)
+    # Heavier: a lower damping rate, the semi-implicit factor closer to 1.
+    assert damping_torque() < free
+
+
+def test_warnings_are_not_errors_here() -> None:
+    # The adapter itself emits no warning in a plain run.
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pool = Pool()
+        pool.half_density_cube(0.2)
+        pool.run(0.5)
