@@ -1,0 +1,383 @@
+"""buoyancy.Controller, the binding of the core's engine-independent controller: its arrays in
+and out (shapes, dtypes, errors naming the argument), a cube at rest half under water, the books
+of the applied share (take-back, forget, a wiped share), inactive and not-finite bodies, waking,
+bodies of several parts, per-body settings."""
+
+from __future__ import annotations
+
+import doctest
+import pickle
+import threading
+from typing import Any
+
+import numpy as np
+import pytest
+
+import buoyancy
+
+WEIGHT = 500.0 * 9.81  # N, of the half-density 1 m cube: its buoyancy half under water
+IDENTITY = (0.0, 0.0, 0.0, 1.0)
+
+
+def states(n: int, **change: Any) -> dict[str, Any]:
+    """The keyword arguments of ``step`` for ``n`` 1 m cubes of 500 kg at rest, their center at
+    the water level, holding no force; ``change`` replaces some."""
+    arrays: dict[str, Any] = {
+        "positions": np.zeros((n, 3)),
+        "quaternions": np.tile(IDENTITY, (n, 1)),
+        "centers_of_mass": np.zeros((n, 3)),
+        "linear_velocities": np.zeros((n, 3)),
+        "angular_velocities": np.zeros((n, 3)),
+        "masses": np.full(n, 500.0),
+        "inverse_masses": np.full((n, 3), 1 / 500.0),
+        "inverse_inertias": np.tile(np.eye(3) * 6 / 500.0, (n, 1, 1)),
+        "gravity_scales": np.ones(n),
+        "applied_forces": np.zeros((n, 3), np.float32),
+        "applied_torques": np.zeros((n, 3), np.float32),
+        "dynamic": np.ones(n, bool),
+        "sleeping": np.zeros(n, bool),
+    }
+    arrays.update(change)
+    return arrays
+
+
+def cubes(n: int, **settings: Any) -> buoyancy.Controller:
+    controller = buoyancy.Controller(**settings)
+    for _ in range(n):
+        controller.add(buoyancy.shapes.cube())
+    return controller
+
+
+class Engine:
+    """What an engine like rapier keeps: each body's applied force and torque, float32, to which
+    the commands add."""
+
+    def __init__(self, controller: buoyancy.Controller, n: int) -> None:
+        self.controller = controller
+        self.forces = np.zeros((n, 3), np.float32)
+        self.torques = np.zeros((n, 3), np.float32)
+
+    def step(self, **change: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        n = len(self.forces)
+        f, t, wake = self.controller.step(
+            1 / 60, **states(n, applied_forces=self.forces, applied_torques=self.torques, **change)
+        )
+        dynamic = np.asarray(change.get("dynamic", np.ones(n, bool)))
+        # Like rapier: a body that is not dynamic ignores what is added.
+        self.forces[dynamic] += f[dynamic]
+        self.torques[dynamic] += t[dynamic]
+        return f, t, wake
+
+
+def test_a_cube_at_rest_half_under_water_gets_its_weight() -> None:
+    engine = Engine(cubes(1), 1)
+    f, t, wake = engine.step()
+    assert f.dtype == np.float32 and t.dtype == np.float32 and wake.dtype == np.bool_
+    assert f.shape == (1, 3) and t.shape == (1, 3) and wake.shape == (1,)
+    np.testing.assert_allclose(f[0], [0.0, WEIGHT, 0.0], atol=1e-3)
+    np.testing.assert_allclose(t[0], 0.0, atol=1e-3)
+    report = engine.controller.report(0)
+    assert report.outcome == "applied"
+    assert report.submerged_volume == pytest.approx(0.5, abs=1e-12)
+    np.testing.assert_allclose(report.center_of_buoyancy, [0.0, -0.25, 0.0], atol=1e-12)
+    np.testing.assert_allclose(report.force, report.buoyancy_force + report.damping_force)
+    assert report.wetted_area == pytest.approx(3.0)
+    # The engine holds it now: the next step adds nothing.
+    f, t, wake = engine.step()
+    assert not f.any() and not t.any() and not wake.any()
+
+
+def test_the_take_back_returns_the_share() -> None:
+    controller = cubes(3)
+    engine = Engine(controller, 3)
+    engine.step(positions=np.array([[0.0, 0.0, 0.0], [0.0, -0.25, 0.0], [0.0, 5.0, 0.0]]))
+    held = engine.forces.copy()
+    force, torque = controller.remove(0)
+    assert force.dtype == np.float32 and force.shape == (3,) and torque.shape == (3,)
+    np.testing.assert_array_equal(force, -held[0])
+    np.testing.assert_array_equal(torque, -engine.torques[0])
+    # The last body took number 0.
+    assert len(controller) == 2
+    assert controller.report(0).submerged_volume == 0.0 and controller.report(1).submerged_volume == 0.75
+    force, _ = controller.remove(1)
+    np.testing.assert_array_equal(force, -held[1])
+    with pytest.raises(IndexError, match="^index: no body 1; the controller has 1"):
+        controller.remove(1)
+
+
+def test_forget_applied_and_a_wiped_share() -> None:
+    engine = Engine(cubes(1), 1)
+    engine.step()
+    # The application reset the body's forces and says so: the whole share again.
+    engine.forces[:] = 0
+    engine.torques[:] = 0
+    engine.controller.forget_applied(0)
+    f, _, _ = engine.step()
+    assert f[0, 1] == pytest.approx(WEIGHT)
+    # Reset without saying so (rapier's NaN quarantine): both exactly zero, noticed.
+    engine.forces[:] = 0
+    f, _, _ = engine.step()
+    assert f[0, 1] == pytest.approx(WEIGHT)
+    np.testing.assert_allclose(engine.forces[0], [0, WEIGHT, 0], atol=1e-3)
+
+
+def test_the_applications_own_force_stays() -> None:
+    engine = Engine(cubes(1), 1)
+    engine.forces[0] = [10.0, 0.0, 0.0]  # a thrust the application added once
+    f, _, _ = engine.step()
+    np.testing.assert_allclose(f[0], [0.0, WEIGHT, 0.0], atol=1e-3)
+    np.testing.assert_allclose(engine.forces[0], [10.0, WEIGHT, 0.0], atol=1e-3)
+
+
+def test_inactive_bodies_get_nothing_and_keep_their_share() -> None:
+    engine = Engine(cubes(2), 2)
+    engine.step()
+    held = engine.forces.copy()
+    inactive = np.array([False, True])
+    # rapier reads zero forces for a body that is not dynamic: no wiped share for it.
+    f, t, _ = engine.step(dynamic=inactive, positions=np.full((2, 3), -0.1))
+    assert not f[0].any() and not t[0].any()
+    assert f[1].any()
+    report = engine.controller.report(0)
+    assert report.outcome == "inactive" and report.submerged_volume == 0.0
+    assert report.center_of_buoyancy.tolist() == report.center_of_mass.tolist()
+    # Dynamic again, where it was: the share it kept is still right, nothing to add.
+    f, _, _ = engine.step()
+    assert not f[0].any()
+    np.testing.assert_array_equal(engine.forces[0], held[0])
+    # And the take-back is the share it kept.
+    np.testing.assert_array_equal(engine.controller.remove(0)[0], -held[0])
+
+
+def test_a_body_that_is_not_finite_gets_no_force() -> None:
+    engine = Engine(cubes(2), 2)
+    engine.step()
+    velocities = np.array([[np.nan, 0.0, 0.0], [0.0, 0.0, 0.0]])
+    f, _, _ = engine.step(linear_velocities=velocities)
+    assert engine.controller.report(0).outcome == "not_finite"
+    np.testing.assert_allclose(f[0], [0.0, -WEIGHT, 0.0], atol=1e-3)  # the share taken back
+    assert not f[1].any()
+    # A quaternion that is not finite too, without an error.
+    quaternions = np.array([[np.nan] * 4, IDENTITY])
+    engine.step(quaternions=quaternions)
+    assert engine.controller.report(0).outcome == "not_finite"
+    f, _, _ = engine.step()
+    assert engine.controller.report(0).outcome == "applied" and f[0, 1] == pytest.approx(WEIGHT)
+
+
+def test_waking() -> None:
+    engine = Engine(cubes(1), 1)
+    sleeping = np.array([True])
+    _, _, wake = engine.step(sleeping=sleeping)
+    assert wake.tolist() == [True]  # from nothing to its weight
+    # A change far below 0.1 % of the weight: added, without waking the sleeping body...
+    _, _, wake = engine.step(sleeping=sleeping, positions=np.array([[0.0, -1e-5, 0.0]]))
+    assert engine.forces[0, 1] > WEIGHT and wake.tolist() == [False]
+    # ...but such changes add up.
+    for k in range(2, 200):
+        f, _, wake = engine.step(sleeping=sleeping, positions=np.array([[0.0, -1e-5 * k, 0.0]]))
+        if wake[0]:
+            break
+    assert wake[0] and 0.001 * WEIGHT < f[0, 1] * k
+
+
+def test_bodies_of_several_parts_and_per_body_settings() -> None:
+    cube = buoyancy.shapes.cube()
+    controller = buoyancy.Controller()
+    controller.add([(cube, (-1.0, 0.0, 0.0), IDENTITY), (cube, (1.0, 0.0, 0.0), np.eye(3))])
+    controller.add(cube, water=buoyancy.Water(density=1025.0), method="fast_surface")
+    controller.add(cube, damping=buoyancy.DampingCoefficients.off())
+    f, _, _ = controller.step(1 / 60, **states(3, linear_velocities=np.tile([0.0, -1.0, 0.0], (3, 1))))
+    two, sea, undamped = (controller.report(i) for i in range(3))
+    assert two.submerged_volume == pytest.approx(1.0) and two.buoyancy_force[1] == pytest.approx(2 * WEIGHT)
+    np.testing.assert_allclose(two.buoyancy_torque, 0.0, atol=1e-9)  # symmetric about the center of mass
+    assert sea.buoyancy_force[1] == pytest.approx(1025.0 * 9.81 * 0.5)
+    assert undamped.damping_force.tolist() == [0, 0, 0] and sea.damping_force[1] > 0
+    parts = controller.parts(0)
+    assert [p[0] for p in parts] == [cube, cube] and parts[0][0] is cube
+    assert parts[1][1].tolist() == [1.0, 0.0, 0.0] and parts[1][2].tolist() == list(IDENTITY)
+    # Replacing keeps the books: the engine holds the old share, the command adds the difference.
+    controller.replace(2, [cube, cube])
+    f2, _, _ = controller.step(1 / 60, **states(3, applied_forces=f))
+    assert f2[2, 1] == pytest.approx(WEIGHT, rel=1e-6)
+
+
+def test_settings() -> None:
+    controller = buoyancy.Controller(buoyancy.Water(level=1.0), "ExactSurface", buoyancy.DampingCoefficients.off())
+    assert controller.water == buoyancy.Water(level=1.0)
+    assert controller.method == "exact_surface" and controller.damping.is_off
+    controller.water = buoyancy.Water(density=1025.0)
+    controller.method = "fast"
+    controller.damping = buoyancy.DampingCoefficients(linear_drag=5.0)
+    assert controller.water.density == 1025.0 and controller.method == "fast"
+    assert controller.damping.linear_drag == 5.0
+    assert repr(controller).startswith("Controller(0 bodies, water=Water(density=1025")
+    assert buoyancy.Controller().method == "exact" and buoyancy.Controller().damping == buoyancy.DampingCoefficients()
+
+
+@pytest.mark.parametrize(
+    ("argument", "value", "match"),
+    [
+        ("positions", np.zeros((3, 3)), r"^positions: expected shape \(N, 3\) .*N = 2, .*got shape \(3, 3\)$"),
+        ("positions", np.zeros((2, 4)), r"^positions: expected shape \(N, 3\) .*got shape \(2, 4\)$"),
+        ("positions", np.zeros(6), r"^positions: expected shape \(N, 3\) .*got shape \(6,\)$"),
+        ("positions", [["a", "b", "c"]] * 2, r"^positions: expected a float64 array of shape \(N, 3\).*string"),
+        ("quaternions", np.zeros((2, 3)), r"^quaternions: expected shape \(N, 4\) \(one quaternion \(x, y, z, w\)"),
+        ("quaternions", np.array([IDENTITY, (0.0, 0.0, 0.0, 2.0)]), r"^quaternions\[1\]: the quaternion .* norm 2"),
+        ("centers_of_mass", np.zeros((2, 3, 1)), r"^centers_of_mass: expected shape \(N, 3\)"),
+        ("linear_velocities", None, r"^linear_velocities: expected shape \(N, 3\) .*got shape \(\)$"),
+        ("angular_velocities", np.zeros((1, 3)), r"^angular_velocities: expected shape \(N, 3\)"),
+        ("masses", np.zeros((2, 1)), r"^masses: expected shape \(N,\) \(one mass per body\)"),
+        ("masses", np.array([500.0, -1.0]), r"^masses\[1\]: must be finite and non-negative$"),
+        ("masses", np.array([np.inf, 1.0]), r"^masses\[0\]: must be finite and non-negative$"),
+        ("inverse_masses", np.zeros((2, 2)), r"^inverse_masses: expected shape \(N, 3\) or \(N,\)"),
+        ("inverse_masses", np.array([[0.0, 0.0, 0.0], [0.0, -1.0, 0.0]]), r"^inverse_masses\[1\]: must be finite"),
+        ("inverse_inertias", np.zeros((2, 3)), r"^inverse_inertias: expected shape \(N, 3, 3\)"),
+        ("inverse_inertias", np.full((2, 3, 3), np.nan), r"^inverse_inertias\[0\]: has a NaN or infinite component$"),
+        ("gravity_scales", np.ones(3), r"^gravity_scales: expected shape \(N,\)"),
+        ("gravity_scales", np.array([1.0, np.nan]), r"^gravity_scales\[1\]: has a NaN or infinite component$"),
+        ("applied_forces", np.zeros((2, 2), np.float32), r"^applied_forces: expected shape \(N, 3\)"),
+        ("applied_torques", np.zeros((3, 3), np.float32), r"^applied_torques: expected shape \(N, 3\)"),
+        ("dynamic", np.ones(3, bool), r"^dynamic: expected shape \(N,\) \(one flag per body\)"),
+        ("sleeping", True, r"^sleeping: expected shape \(N,\) .*got shape \(\)$"),
+    ],
+)
+def test_step_errors_name_the_argument(argument: str, value: Any, match: str) -> None:
+    controller = cubes(2)
+    with pytest.raises(ValueError, match=match):
+        controller.step(1 / 60, **states(2, **{argument: value}))
+    # Nothing was computed.
+    assert controller.report(0).outcome == "not_evaluated"
+
+
+@pytest.mark.parametrize("dt", [-0.1, float("nan"), float("inf")])
+def test_step_dt_must_be_finite_and_non_negative(dt: float) -> None:
+    with pytest.raises(ValueError, match="^dt: must be finite and non-negative"):
+        cubes(1).step(dt, **states(1))
+    with pytest.raises(TypeError, match="^dt: expected a number, got str"):
+        cubes(1).step("0.1", **states(1))  # type: ignore[arg-type]
+
+
+def test_step_converts_other_dtypes_and_layouts() -> None:
+    reference, _, _ = cubes(2).step(1 / 60, **states(2))
+    table = np.zeros((2, 8))
+    table[:, 6] = 1.0
+    variants: list[dict[str, Any]] = [
+        # Lists, float32, ints, Fortran order, strided columns of one table.
+        {"positions": [[0, 0, 0], [0, 0, 0]], "masses": [500, 500], "dynamic": [1, 1], "sleeping": [0, 0]},
+        {"positions": np.zeros((2, 3), np.float32), "inverse_masses": np.full(2, 1 / 500.0)},
+        {"applied_forces": np.zeros((2, 3)), "applied_torques": [[0, 0, 0]] * 2},
+        {"inverse_inertias": np.asfortranarray(np.tile(np.eye(3) * 6 / 500.0, (2, 1, 1)))},
+        {"positions": table[:, 0:3], "quaternions": table[:, 3:7], "centers_of_mass": table[:, 0:6:2]},
+    ]
+    for change in variants:
+        f, _, _ = cubes(2).step(1 / 60, **states(2, **change))
+        np.testing.assert_array_equal(f, reference, err_msg=str(change))
+
+
+def test_no_bodies() -> None:
+    f, t, wake = buoyancy.Controller().step(0.01, **states(0))
+    assert f.shape == (0, 3) and t.shape == (0, 3) and wake.shape == (0,)
+
+
+def test_add_and_index_errors() -> None:
+    controller = buoyancy.Controller()
+    cube = buoyancy.shapes.cube()
+    with pytest.raises(ValueError, match="^parts: a floating body needs at least one mesh$"):
+        controller.add([])
+    with pytest.raises(TypeError, match="^parts: expected a Mesh, or a list of parts, .* got str$"):
+        controller.add("cube")  # type: ignore[arg-type]
+    with pytest.raises(TypeError, match=r"^parts\[1\]: expected a Mesh or a \(mesh, position, quaternion\) tuple"):
+        controller.add([cube, 3])  # type: ignore[list-item]
+    with pytest.raises(TypeError, match=r"^parts\[0\]: expected .* got a tuple of 2 items$"):
+        controller.add([(cube, (0, 0, 0))])  # type: ignore[list-item]
+    with pytest.raises(TypeError, match=r"^parts\[0\]\[0\]: expected a buoyancy.Mesh, got str$"):
+        controller.add([("cube", (0, 0, 0), IDENTITY)])  # type: ignore[list-item]
+    with pytest.raises(ValueError, match=r"^parts\[0\]\[1\] \(position\): expected 3 numbers"):
+        controller.add([(cube, (0, 0), IDENTITY)])
+    with pytest.raises(ValueError, match=r"^parts\[0\]\[2\] \(quaternion\): the quaternion .* norm"):
+        controller.add([(cube, (0, 0, 0), (0, 0, 0, 2))])
+    with pytest.raises(ValueError, match="^method: "):
+        controller.add(cube, method="bogus")
+    with pytest.raises(TypeError, match="^water: expected a buoyancy.Water, got float$"):
+        controller.add(cube, water=1000.0)  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="^water: the controller floats bodies in still water"):
+        controller.add(cube, water=buoyancy.Water(waves=buoyancy.AiryWave(0.1, 5.0)))
+    with pytest.raises(ValueError, match="^water: the controller floats bodies in still water"):
+        controller.water = buoyancy.Water(waves=buoyancy.AiryWave(0.1, 5.0))
+    with pytest.raises(TypeError, match="^damping: expected a buoyancy.DampingCoefficients, got buoyancy.Water$"):
+        controller.add(cube, damping=buoyancy.Water())  # type: ignore[arg-type]
+    with pytest.raises(TypeError, match="^water: expected a buoyancy.Water, got NoneType$"):
+        controller.water = None  # type: ignore[assignment]
+    assert len(controller) == 0  # nothing was added
+    assert controller.add(cube) == 0 and controller.add([cube]) == 1
+    for call in (controller.report, controller.forget_applied, controller.remove, controller.parts):
+        with pytest.raises(IndexError, match="^index: no body 2; the controller has 2"):
+            call(2)
+        with pytest.raises(IndexError, match="^index: no body -1"):
+            call(-1)
+        with pytest.raises(TypeError, match="^index: expected an integer, got str$"):
+            call("0")  # type: ignore[arg-type]
+    with pytest.raises(IndexError, match="^index: no body 5"):
+        controller.replace(5, cube)
+
+
+def test_float_report() -> None:
+    controller = cubes(1)
+    controller.step(1 / 60, **states(1, linear_velocities=np.array([[0.3, -0.2, 0.0]])))
+    report = controller.report(0)
+    assert pickle.loads(pickle.dumps(report)) == report
+    assert repr(report).startswith("FloatReport(outcome='applied', submerged_volume=0.5, ")
+    assert report != buoyancy.FloatReport()
+    assert buoyancy.FloatReport().outcome == "not_evaluated"
+    with pytest.raises(ValueError, match="^outcome: unknown outcome 'done'; expected one of 'not_evaluated'"):
+        buoyancy.FloatReport(outcome="done")  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="^center_of_mass: expected 3 numbers"):
+        buoyancy.FloatReport(center_of_mass=(1, 2))
+    with pytest.raises(ValueError, match="read-only"):
+        report.buoyancy_force[0] = 1.0
+    with pytest.warns(DeprecationWarning, match="outcome"):
+        assert report.skipped is False
+
+
+def test_threads_share_nothing() -> None:
+    # The step releases the interpreter lock: controllers stepped from several threads at once
+    # give what they give one at a time.
+    n = 50
+    rng = np.random.default_rng(5)
+    change = {
+        "positions": rng.uniform(-0.5, 0.5, (n, 3)),
+        "linear_velocities": rng.normal(size=(n, 3)),
+        "angular_velocities": rng.normal(size=(n, 3)),
+    }
+    mesh = buoyancy.shapes.uv_sphere(0.5, 64, 32)
+
+    def run() -> np.ndarray:
+        controller = buoyancy.Controller()
+        for _ in range(n):
+            controller.add(mesh)
+        return controller.step(1 / 60, **states(n, **change))[0]
+
+    expected = run()
+    results: list[np.ndarray] = []
+    threads = [threading.Thread(target=lambda: results.append(run())) for _ in range(4)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert len(results) == 4
+    for result in results:
+        np.testing.assert_array_equal(result, expected)
+
+
+@pytest.mark.parametrize("name", ["Controller", "Controller.add", "FloatReport"])
+def test_docstring_examples(name: str) -> None:
+    obj: Any = buoyancy
+    for part in name.split("."):
+        obj = getattr(obj, part)
+    parser = doctest.DocTestParser()
+    test = parser.get_doctest(obj.__doc__ or "", {"buoyancy": buoyancy, "np": np}, name, None, 0)
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    runner.run(test)
+    result = runner.summarize(verbose=False)
+    assert result.attempted > 0 and result.failed == 0
