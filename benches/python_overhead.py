@@ -1,12 +1,22 @@
 """Python-side performance of the bindings (a benchmark script, not a test).
 
-    python benches/python_overhead.py [--poses 10000] [--repeat 7]
+    python benches/python_overhead.py [--poses 10000] [--repeat 7] [--only calls|batch|rapier]
+                                      [--bodies 100] [--steps 30] [--before REV]
 
 1. Per-call cost of ``mesh.buoyancy`` on the 12-triangle cube (goal: at most 3 µs), for the
    argument forms people use: tuples, numpy arrays, keywords with water and method.
 2. ``buoyancy_batch`` over 10,000 poses of the Stanford bunny (5,002 triangles; the torus knot if
    the shared meshes are absent), on a pool of 1 and of 2 threads (goal: at least 1.7× faster
    on 2). Best of ``--repeat`` runs each; the machine's other load makes every figure noisy.
+3. ``buoyancy.rapier``: ``FloatingBodies.apply`` per body for 100 bodies of rapier3d (the
+   12-triangle cube, and the bunny scaled to a bounding radius of 0.3 m as in the Rust adapter's
+   ``cargo bench -p buoyancy-rapier --bench step``), half submerged, tilted and moving; against
+   the cost of the controller's own step (``Controller.step`` on the same arrays: the Rust work,
+   with its argument checks), so that the difference is the Python glue (goal: at most 5 µs per
+   body). ``--before REV`` times the ``buoyancy/rapier.py`` of a git revision too (the Python
+   re-implementation before the controller: ``--before ced904e``). Each figure is the median
+   step of a burst of ``--steps`` steps, the best of ``--repeat`` bursts, the implementations
+   taking turns so that the machine's load weighs on all of them alike.
 """
 
 from __future__ import annotations
@@ -14,9 +24,12 @@ from __future__ import annotations
 import argparse
 import os
 import pathlib
+import subprocess
 import sys
 import time
 import timeit
+import types
+from typing import Any
 
 import numpy as np
 
@@ -30,13 +43,7 @@ def best_per_call(stmt, number: int, repeat: int) -> float:  # type: ignore[no-u
     return min(timeit.repeat(stmt, number=number, repeat=repeat)) / number
 
 
-def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--poses", type=int, default=10_000)
-    parser.add_argument("--repeat", type=int, default=7)
-    args = parser.parse_args()
-
-    print(f"buoyancy {buoyancy.__version__}, Python {sys.version.split()[0]}, {os.cpu_count()} CPUs\n")
+def calls(args: argparse.Namespace) -> None:
     cube = buoyancy.shapes.cube(1)
     assert cube.n_triangles == 12
     water = buoyancy.Water(density=1025.0)
@@ -58,6 +65,8 @@ def main() -> int:
     for name, f in cases.items():
         print(f"| `{name}` | {best_per_call(f, 20_000, args.repeat) * 1e6:.2f} |")
 
+
+def batch(args: argparse.Namespace) -> None:
     bunny = find_sample_mesh("bunny.obj", REPO)
     if bunny is not None:
         mesh, name = buoyancy.load(bunny), "bunny"
@@ -99,6 +108,178 @@ def main() -> int:
     )
     b = mesh.buoyancy_batch(positions, q)
     print(f"\n({int(np.sum(b.partially_submerged > 0))} of {k} poses cut by the surface)")
+
+
+def bunny_or_knot() -> tuple[str, buoyancy.Mesh]:
+    """The bunny scaled to a bounding radius of 0.3 m about its centroid (the torus knot when the
+    shared meshes are absent), as in the Rust adapter's benchmark."""
+    path = find_sample_mesh("bunny.obj", REPO)
+    if path is None:
+        name, mesh = "torus knot", buoyancy.shapes.torus_knot(2, 3, 1.0, 0.3, 256, 16)
+    else:
+        name, mesh = "bunny", buoyancy.load(path)
+    return name, buoyancy.Mesh((mesh.vertices - mesh.centroid) * (0.3 / mesh.bounding_radius), mesh.faces)
+
+
+def rapier_module_at(revision: str) -> types.ModuleType:
+    """``buoyancy/rapier.py`` as it was at the git ``revision``, as a module of the installed
+    package (its relative imports are the installed ``buoyancy._core``'s)."""
+    source = subprocess.run(
+        ["git", "-C", str(REPO), "show", f"{revision}:python/buoyancy/rapier.py"],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout
+    module = types.ModuleType("buoyancy._rapier_before")
+    module.__package__ = "buoyancy"
+    module.__file__ = f"{revision}:python/buoyancy/rapier.py"
+    sys.modules[module.__name__] = module  # dataclasses look their module up
+    exec(compile(source, module.__file__, "exec"), module.__dict__)
+    return module
+
+
+class Scene:
+    """``bodies`` bodies of ``mesh`` (density 500 kg/m³) in a rapier3d world, floating with the
+    ``FloatingBodies`` of ``adapter``: half submerged, tilted and moving, awake."""
+
+    def __init__(self, adapter: Any, mesh: buoyancy.Mesh, bodies: int) -> None:
+        import rapier3d
+
+        self.world = rapier3d.PhysicsWorld(gravity=(0.0, -9.81, 0.0))
+        self.floating = adapter.FloatingBodies.for_world(self.world)
+        self.bodies = bodies
+        spacing = 2.5 * mesh.bounding_radius
+        size = 2.0 * mesh.bounding_radius
+        vertices, faces = mesh.vertices.astype(np.float32), mesh.faces.astype(np.uint32)
+        for i in range(bodies):
+            position = ((i % 10) * spacing, size * (-0.05 + 0.01 * (i % 7)), (i // 10) * spacing)
+            body = rapier3d.RigidBody.dynamic().translation(position).rotation((0.1 * (i % 5), 0.3, 0.0))
+            body = body.linvel((0.2, -0.5, 0.1)).angvel((0.3, 0.0, -0.2)).can_sleep(False)
+            handle = self.world.add_body(body, [rapier3d.Collider.trimesh(vertices, faces).density(500.0)])
+            self.floating.register(handle, mesh)
+        self.dt = self.world.integration_parameters.dt
+
+    def burst(self, steps: int) -> tuple[float, float, float]:
+        """The median ``apply``, the median of the glue in it (``apply`` less the time inside
+        ``Controller.step``; NaN for an adapter without a controller) and the median
+        ``world.step`` over ``steps`` steps, s per body."""
+        inner: list[float] = []
+        controller = getattr(self.floating, "_controller", None)
+        if controller is not None:
+            self.floating._controller = _Timed(controller, inner)
+        applies, glues, worlds = [], [], []
+        try:
+            for _ in range(steps):
+                inner.clear()
+                t0 = time.perf_counter()
+                self.floating.apply(self.world.rigid_bodies, self.dt)
+                t1 = time.perf_counter()
+                self.world.step()
+                t2 = time.perf_counter()
+                applies.append(t1 - t0)
+                glues.append(t1 - t0 - sum(inner) if controller is not None else np.nan)
+                worlds.append(t2 - t1)
+        finally:
+            if controller is not None:
+                self.floating._controller = controller
+        return tuple(float(np.median(t)) / self.bodies for t in (applies, glues, worlds))  # type: ignore[return-value]
+
+    def controller_burst(self, steps: int) -> float:
+        """The median ``Controller.step`` alone on the arrays of the scene's current state, s per
+        body (the controller-based adapter's)."""
+        floating = self.floating
+        _, record, scalars = floating._read(self.world.rigid_bodies)
+        states = floating._states(record, scalars)
+        step = floating._controller.step
+        times = []
+        for _ in range(steps):
+            t0 = time.perf_counter()
+            step(self.dt, *states)
+            times.append(time.perf_counter() - t0)
+        return float(np.median(times)) / self.bodies
+
+
+class _Timed:
+    """A controller whose ``step`` calls add their duration to ``times``."""
+
+    def __init__(self, controller: Any, times: list[float]) -> None:
+        self._controller, self._times = controller, times
+
+    def step(self, *args: Any) -> Any:
+        t0 = time.perf_counter()
+        try:
+            return self._controller.step(*args)
+        finally:
+            self._times.append(time.perf_counter() - t0)
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._controller, name)
+
+
+def rapier_overhead(args: argparse.Namespace) -> None:
+    try:
+        import rapier3d
+
+        import buoyancy.rapier as after
+    except ImportError as error:
+        print(f"\n## buoyancy.rapier: skipped, rapier3d cannot be imported ({error})")
+        return
+    before = rapier_module_at(args.before) if args.before else None
+    name, bunny = bunny_or_knot()
+    meshes = [("cube", buoyancy.shapes.cube()), (name, bunny)]
+    print(
+        f"\n## buoyancy.rapier: FloatingBodies.apply for {args.bodies} bodies, µs per body "
+        f"(rapier3d {rapier3d._rapier3d.__version__}; goal: glue <= 5 µs)\n"
+    )
+    header = "| mesh | triangles |" + (f" before ({args.before}) |" if before else "")
+    header += " apply | Controller.step | glue: apply − Controller.step | world.step |"
+    print(header)
+    print("|" + "---|" * (header.count("|") - 1))
+    for label, mesh in meshes:
+        scenes = {"after": Scene(after, mesh, args.bodies)}
+        if before is not None:
+            scenes["before"] = Scene(before, mesh, args.bodies)
+        best: dict[str, float] = {}
+        steps = args.steps if mesh.n_triangles < 1000 else max(5, args.steps // 3)
+        for _ in range(args.repeat):
+            for key, scene in scenes.items():
+                apply, glue, world = scene.burst(steps)
+                best[key] = min(best.get(key, np.inf), apply)
+                if key == "after":
+                    best["glue"] = min(best.get("glue", np.inf), glue)
+                    best["world"] = min(best.get("world", np.inf), world)
+            best["controller"] = min(best.get("controller", np.inf), scenes["after"].controller_burst(steps))
+        row = f"| {label} | {mesh.n_triangles} |"
+        if before is not None:
+            row += f" {best['before'] * 1e6:.1f} |"
+        row += f" {best['after'] * 1e6:.2f} | {best['controller'] * 1e6:.2f} | {best['glue'] * 1e6:.2f} |"
+        row += f" {best['world'] * 1e6:.2f} |"
+        print(row)
+    print(
+        "\n(apply: read every body's state from rapier3d, one Controller.step, add the forces; "
+        "Controller.step: the Rust step alone, with its argument checks, on the arrays of one state; "
+        "glue: apply less the time spent inside its Controller.step, step by step; world.step: "
+        "rapier's own step, for scale. The machine's other load makes every figure noisy)"
+    )
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--poses", type=int, default=10_000)
+    parser.add_argument("--repeat", type=int, default=7)
+    parser.add_argument("--only", choices=["calls", "batch", "rapier"], help="run one section only")
+    parser.add_argument("--bodies", type=int, default=100, help="bodies of the rapier section (default 100)")
+    parser.add_argument("--steps", type=int, default=30, help="steps per burst of the rapier section (default 30)")
+    parser.add_argument(
+        "--before", metavar="REV", help="also time buoyancy/rapier.py of this git revision (e.g. ced904e)"
+    )
+    args = parser.parse_args()
+
+    print(f"buoyancy {buoyancy.__version__}, Python {sys.version.split()[0]}, {os.cpu_count()} CPUs\n")
+    sections = {"calls": calls, "batch": batch, "rapier": rapier_overhead}
+    for key, section in sections.items():
+        if args.only in (None, key):
+            section(args)
     return 0
 
 

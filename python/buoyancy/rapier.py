@@ -171,22 +171,38 @@ def _water_for_gravity(gravity: npt.ArrayLike) -> Water:
     return Water(gravity=norm, normal=tuple(-g / norm))
 
 
+def _quaternion_to_matrix() -> np.ndarray:
+    """The (16, 9) matrix that maps the products ``q_a q_b`` of a unit quaternion ``(x, y, z, w)``
+    (flattened, ``a`` major) to its rotation matrix (flattened, row major)."""
+    c = np.zeros((4, 4, 3, 3))
+    x, y, z, w = range(4)
+    # R = (w² − |v|²) I + 2 v vᵀ + 2 w [v]×, each term a product of two components.
+    for i, a in enumerate((x, y, z)):
+        c[w, w, i, i] += 1.0
+        for b in (x, y, z):
+            c[b, b, i, i] -= 1.0
+        for j, b in enumerate((x, y, z)):
+            c[a, b, i, j] += 2.0
+    for (i, j), (k, sign) in {
+        (0, 1): (z, -1),
+        (0, 2): (y, 1),
+        (1, 0): (z, 1),
+        (1, 2): (x, -1),
+        (2, 0): (y, -1),
+        (2, 1): (x, 1),
+    }.items():
+        c[w, k, i, j] += sign
+        c[k, w, i, j] += sign
+    return c.reshape(16, 9)
+
+
+_QUATERNION_TO_MATRIX = _quaternion_to_matrix()
+
+
 def _rotation_matrices(q: np.ndarray) -> np.ndarray:
     """The rotation matrices (N, 3, 3) of unit quaternions (N, 4) ``(x, y, z, w)``."""
-    x, y, z, w = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
-    xx, yy, zz = x * x, y * y, z * z
-    xy, xz, yz, wx, wy, wz = x * y, x * z, y * z, w * x, w * y, w * z
-    r = np.empty((len(q), 3, 3))
-    r[:, 0, 0] = 1 - 2 * (yy + zz)
-    r[:, 0, 1] = 2 * (xy - wz)
-    r[:, 0, 2] = 2 * (xz + wy)
-    r[:, 1, 0] = 2 * (xy + wz)
-    r[:, 1, 1] = 1 - 2 * (xx + zz)
-    r[:, 1, 2] = 2 * (yz - wx)
-    r[:, 2, 0] = 2 * (xz - wy)
-    r[:, 2, 1] = 2 * (yz + wx)
-    r[:, 2, 2] = 1 - 2 * (xx + yy)
-    return r
+    n = len(q)
+    return ((q[:, :, None] * q[:, None, :]).reshape(n, 16) @ _QUATERNION_TO_MATRIX).reshape(n, 3, 3)
 
 
 def _local_mass_properties(rb: Any) -> tuple[float, np.ndarray]:
@@ -442,7 +458,7 @@ class FloatingBodies:
             if not self._bodies.handles:
                 return
             views, record, scalars = self._read(bodies)
-        add_forces, add_torques, wake = self._step(record, scalars, float(dt))
+        add_forces, add_torques, wake = self._controller.step(float(dt), *self._states(record, scalars))
         forces: np.ndarray = np.any(add_forces, axis=1)
         torques: np.ndarray = np.any(add_torques, axis=1)
         changed = np.flatnonzero(forces | torques).tolist()
@@ -519,28 +535,34 @@ class FloatingBodies:
             registered.refresh(keys)
         return views, record, np.array(scalars, dtype=np.float64)
 
-    def _step(self, record: np.ndarray, scalars: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """One step of the controller on the state :meth:`_read` read: rapier's effective inverse
-        masses and world inverse inertias (zero on locked axes) from the mass properties in each
-        body's frame."""
+    def _states(self, record: np.ndarray, scalars: np.ndarray) -> tuple[np.ndarray, ...]:
+        """The arguments of :meth:`Controller.step` after ``dt``, from the state :meth:`_read`
+        read: with rapier's effective inverse masses and world inverse inertias (zero on locked
+        axes) from the mass properties in each body's frame."""
         registered = self._bodies
-        free = ((scalars[:, _LOCKED].astype(np.int64)[:, None] & _LOCK_BITS) == 0).astype(np.float64)
         quaternions = record["rotation"].astype(np.float64)
-        r = _rotation_matrices(quaternions)
-        # A body whose rotation is not finite gets no force (the controller says so); its inertia
-        # must still be finite.
-        r[~np.isfinite(r).all(axis=(1, 2))] = np.eye(3)
-        inverse_inertias = r @ registered.local_inverse_inertia @ r.transpose(0, 2, 1)
-        inverse_inertias *= free[:, None, 3:] * free[:, 3:, None]
-        return self._controller.step(
-            dt,
+        if not np.isfinite(quaternions).all():
+            # A body whose rotation is not finite gets no force (the controller says so); its
+            # inertia must still be finite.
+            finite: np.ndarray = np.all(np.isfinite(quaternions), axis=1)
+            rotations = _rotation_matrices(np.where(finite[:, None], quaternions, (0.0, 0.0, 0.0, 1.0)))
+        else:
+            rotations = _rotation_matrices(quaternions)
+        inverse_inertias = rotations @ registered.local_inverse_inertia @ rotations.transpose(0, 2, 1)
+        inverse_masses = registered.inverse_mass
+        locked = scalars[:, _LOCKED]
+        if locked.any():
+            free = ((locked.astype(np.int64)[:, None] & _LOCK_BITS) == 0).astype(np.float64)
+            inverse_masses = inverse_masses[:, None] * free[:, :3]
+            inverse_inertias *= free[:, None, 3:] * free[:, 3:, None]
+        return (
             record["translation"],
             quaternions,
             record["center_of_mass"],
             record["linvel"],
             record["angvel"],
             scalars[:, _MASS],
-            registered.inverse_mass[:, None] * free[:, :3],
+            inverse_masses,
             inverse_inertias,
             scalars[:, _GRAVITY_SCALE],
             record["force"],

@@ -601,6 +601,16 @@ def test_report_outcome_follows_the_body() -> None:
     assert pool.water.report(h).outcome == "applied"
     assert abs(pool.body(h).user_force.y - held[1]) < 0.01 * held[1]
 
+    # A rotation that is not finite: the same.
+    rotation = pool.body(h).rotation
+    pool.body(h).rotation = rapier3d.Rotation3(math.nan, 0.0, 0.0, 0.0)
+    pool.apply()
+    assert pool.water.report(h).outcome == "not_finite"
+    assert np.linalg.norm(vec(pool.body(h).user_force)) < 1e-3
+    pool.body(h).rotation = rotation
+    pool.apply()
+    assert pool.water.report(h).outcome == "applied"
+
 
 # --- several_parts.rs -------------------------------------------------------------------------
 
