@@ -216,6 +216,13 @@ def _local_mass_properties(rb: Any) -> tuple[float, np.ndarray]:
     return inverse_mass, (frame * inverse) @ frame.T
 
 
+def _swap_remove(values: list[Any], i: int) -> None:
+    """Removes item ``i``, the last item taking its place."""
+    last = values.pop()
+    if i < len(values):
+        values[i] = last
+
+
 class _Bodies:
     """The registered bodies' handles in the controller's numbering, rapier's live views of them,
     and their mass properties, read again only when they change."""
@@ -227,35 +234,30 @@ class _Bodies:
         # `owner`; None when they must be looked up again.
         self.views: list[Any] | None = None
         self.owner: Any = None
-        # rapier's serialised mass properties of each body when last read: the key of the two
-        # arrays below.
+        # rapier's serialised mass properties of each body when last read, and what was read of
+        # them: the inverse mass and the inverse inertia in the body's frame.
         self.keys: list[bytes | None] = []
-        self.inverse_mass = np.zeros(0)
-        self.local_inverse_inertia = np.zeros((0, 3, 3))
+        self.inverse_masses: list[float] = []
+        self.local_inverse_inertias: list[np.ndarray] = []
+        # The two lists above as arrays, (N,) and (N, 3, 3); None when they must be made again.
+        self.arrays: tuple[np.ndarray, np.ndarray] | None = None
 
     def add(self, handle: Hashable) -> None:
         self.index[handle] = len(self.handles)
         self.handles.append(handle)
-        self.views = None
         self.keys.append(None)
-        self.inverse_mass = np.append(self.inverse_mass, 0.0)
-        self.local_inverse_inertia = np.concatenate([self.local_inverse_inertia, np.zeros((1, 3, 3))])
+        self.inverse_masses.append(0.0)
+        self.local_inverse_inertias.append(np.zeros((3, 3)))
+        self.views = self.arrays = None
 
     def remove(self, i: int) -> None:
         """Forgets body ``i``; the last body takes its number (as in the controller)."""
-        last = len(self.handles) - 1
         del self.index[self.handles[i]]
-        if i != last:
-            moved = self.handles[last]
-            self.handles[i], self.keys[i] = moved, self.keys[last]
-            self.index[moved] = i
-            self.inverse_mass[i] = self.inverse_mass[last]
-            self.local_inverse_inertia[i] = self.local_inverse_inertia[last]
-        self.handles.pop()
-        self.keys.pop()
-        self.views = None
-        self.inverse_mass = self.inverse_mass[:last].copy()
-        self.local_inverse_inertia = self.local_inverse_inertia[:last].copy()
+        for values in (self.handles, self.keys, self.inverse_masses, self.local_inverse_inertias):
+            _swap_remove(values, i)
+        if i < len(self.handles):
+            self.index[self.handles[i]] = i
+        self.views = self.arrays = None
 
     def look_up(self, bodies: Any) -> list[Any]:
         """rapier's views of the bodies in the set ``bodies`` (``InvalidHandle`` if one is not
@@ -271,8 +273,16 @@ class _Bodies:
         assert views is not None
         for i, (old, new) in enumerate(zip(self.keys, keys, strict=True)):
             if old != new:
-                self.inverse_mass[i], self.local_inverse_inertia[i] = _local_mass_properties(views[i])
+                self.inverse_masses[i], self.local_inverse_inertias[i] = _local_mass_properties(views[i])
         self.keys = keys
+        self.arrays = None
+
+    def mass_arrays(self) -> tuple[np.ndarray, np.ndarray]:
+        """The inverse masses (N,) and the inverse inertias in the bodies' frames (N, 3, 3)."""
+        if self.arrays is None:
+            inertias = np.array(self.local_inverse_inertias, dtype=np.float64).reshape(-1, 3, 3)
+            self.arrays = (np.array(self.inverse_masses, dtype=np.float64), inertias)
+        return self.arrays
 
 
 class FloatingBodies:
@@ -548,8 +558,8 @@ class FloatingBodies:
             rotations = _rotation_matrices(np.where(finite[:, None], quaternions, (0.0, 0.0, 0.0, 1.0)))
         else:
             rotations = _rotation_matrices(quaternions)
-        inverse_inertias = rotations @ registered.local_inverse_inertia @ rotations.transpose(0, 2, 1)
-        inverse_masses = registered.inverse_mass
+        inverse_masses, local_inverse_inertias = registered.mass_arrays()
+        inverse_inertias = rotations @ local_inverse_inertias @ rotations.transpose(0, 2, 1)
         locked = scalars[:, _LOCKED]
         if locked.any():
             free = ((locked.astype(np.int64)[:, None] & _LOCK_BITS) == 0).astype(np.float64)

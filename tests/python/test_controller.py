@@ -381,3 +381,14 @@ def test_docstring_examples(name: str) -> None:
     runner.run(test)
     result = runner.summarize(verbose=False)
     assert result.attempted > 0 and result.failed == 0
+
+
+def test_stubs_list_every_public_name() -> None:
+    import pathlib
+    import re
+
+    stub = (pathlib.Path(buoyancy.__file__).parent / "_core.pyi").read_text()
+    for cls in (buoyancy.Controller, buoyancy.FloatReport):
+        assert re.search(rf"^class {cls.__name__}\b", stub, re.M), cls.__name__
+        for name in (n for n in dir(cls) if not n.startswith("_")):
+            assert re.search(rf"def {name}\b", stub), f"{cls.__name__}.{name} missing from the stub"

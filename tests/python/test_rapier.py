@@ -929,6 +929,28 @@ def test_bookkeeping_and_errors() -> None:
         fb.mesh(fixed)
 
 
+def test_bodies_keep_their_own_state_through_removals() -> None:
+    # Unregistered and removed bodies leave the others' numbers right (the last body takes the
+    # freed number in the controller and in the adapter alike).
+    pool = Pool()
+    heights = [0.4, 0.2, 0.0, -0.2, -0.4, -0.1]
+    handles = [pool.half_density_cube(y) for y in heights]
+    pool.apply()
+    assert pool.water.unregister(handles[1], pool.world.rigid_bodies)
+    pool.world.remove_body(handles[3])
+    pool.apply()
+    assert len(pool.water) == 4
+    for h, y in zip(handles, heights, strict=True):
+        if h in (handles[1], handles[3]):
+            assert h not in pool.water and pool.water.report(h) is None
+            continue
+        report = pool.water.report(h)
+        assert report.submerged_volume == pytest.approx(0.5 - y, abs=1e-6), (h, y)
+        assert report.center_of_mass[1] == pytest.approx(y, abs=1e-6)
+        own, _ = pool.own_wrench(h)
+        assert np.linalg.norm(own) < 1e-2
+
+
 def test_module_docstring_example_runs() -> None:
     after = (buoyancy.rapier.__doc__ or "").split("floats half submerged)::\n", 1)[1]
     lines = []
