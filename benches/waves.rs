@@ -5,7 +5,9 @@
 //! advancing 0.05 s per pose). Each figure is the median over 7 batches (see
 //! `common::microseconds`); the last column is Exact Surface under still water, for scale.
 //!
-//! `cargo bench --bench waves [-- large] [WORD...]` (`large` adds the 10⁶-triangle torus knot;
+//! With `--features rayon`, a column of `Mesh::par_buoyancy_in_waves` on the Airy sea.
+//!
+//! `cargo bench --bench waves [--features rayon] [-- large] [WORD...]` (`large` adds the 10⁶-triangle torus knot;
 //! other words keep the models and columns whose names contain one of them, e.g. `bunny airy`).
 
 mod common;
@@ -110,6 +112,16 @@ fn main() {
         Box::new(|mesh, pose, time| {
             black_box(
                 mesh.buoyancy_froude_krylov(pose, &water, &airy, time)
+                    .unwrap(),
+            );
+        }),
+    ));
+    #[cfg(feature = "rayon")]
+    columns.push((
+        format!("Airy ×8, {} threads", rayon::current_num_threads()),
+        Box::new(|mesh, pose, time| {
+            black_box(
+                mesh.par_buoyancy_in_waves(pose, &water, &airy, time)
                     .unwrap(),
             );
         }),
