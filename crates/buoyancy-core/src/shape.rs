@@ -1,4 +1,4 @@
-//! Procedural closed meshes: cube, UV sphere, torus and torus knot.
+//! Procedural closed meshes: cube, UV sphere, torus, torus knot and Wigley hull.
 //!
 //! Each function returns `(vertices, triangles)` ready for [`Mesh::new`](crate::Mesh::new):
 //! closed 2-manifolds wound counter-clockwise seen from outside, with shared (welded) vertices;
@@ -233,6 +233,193 @@ pub fn torus_knot<T: Real>(
         let du = 1e-4;
         (point(u), point(u + du) - point(u - du))
     })
+}
+
+/// A closed Wigley hull, the parabolic hull form of the seakeeping benchmarks, floating upright
+/// at its design draft: `length` L, `beam` B, `draft` T, closed above the design waterline by a
+/// wall-sided topside of `freeboard` D and a flat deck. `4·(stations − 1)·waterlines +
+/// 2·(stations − 2)` triangles on `2·(stations − 1)·waterlines + stations` vertices
+/// (`41, 17`: 2,798 triangles).
+///
+/// Frame (the frame of [`Water::default`](crate::Water::default), y up): x along the length,
+/// ends at `x = ±L/2`, midship section at `x = 0`; y up, keel at `y = −T`, design waterline at
+/// `y = 0`, deck at `y = D`; z across the beam, the sides at `z = ±w`.
+/// The half-breadth is
+///
+/// * underwater, `−T ≤ y ≤ 0`: `w = (B/2)·(1 − (2x/L)²)·(1 − (y/T)²)`;
+/// * topside, `0 ≤ y ≤ D`: `w = (B/2)·(1 − (2x/L)²)`, the waterline carried straight up;
+///
+/// and the deck is the plane `y = D` between the sides. Below the design waterline the hull
+/// displaces `V = 4LBT/9` with its center of buoyancy `KB = 5T/8` above the keel (at
+/// `y = −3T/8`); its waterplane has area `2LB/3` and `BM = 3B²/(35T)`.
+///
+/// The vertices lie on the hull: `stations` equally spaced sections from `x = −L/2` to `L/2` and
+/// `waterlines` equally spaced levels from the keel to the design waterline, plus the deck edge.
+/// The two sides share the vertices where the breadth vanishes, along the keel and the two
+/// stems (the end sections, which are vertical lines), so no triangle has zero area. The
+/// volume below `y = 0` and its centroid approach `V` and `KB` as the square of the spacing;
+/// the topside, a prism on the polygonal waterline, holds exactly
+/// `D·(2LB/3)·(1 − 1/(stations − 1)²)` (the trapezoidal rule on the parabola). The mesh is
+/// symmetric about `z = 0`, and about `x = 0` when `stations` is odd (a station at
+/// midship): then a body of mass ρ times the volume below `y = 0` with its center of mass on the
+/// mesh's vertical axis through the centroid is in equilibrium at the identity pose. Upright is
+/// stable in roll if the center of mass is below the metacentre, `KG < 5T/8 + 3B²/(35T)` above
+/// the keel: a uniform body (center of mass at the mesh centroid,
+/// `KG = T + (6D² − 3T²)/(8T + 12D)`) of the benchmark's `B/T = 1.6` needs `D ≲ 0.4·T`; a
+/// higher topside needs a lower center of mass (ballast).
+///
+/// ```
+/// use buoyancy_core::{Mesh, Method, Pose, Water, shape};
+///
+/// let (length, beam, draft) = (2.5, 0.25, 0.15625);
+/// let (v, t) = shape::wigley_hull::<f64>(length, beam, draft, 0.1, 41, 17)?;
+/// let hull = Mesh::new(v, t)?;
+/// let b = hull.buoyancy(&Pose::identity(), &Water::default(), Method::Exact)?;
+/// let displacement = 4.0 * length * beam * draft / 9.0;
+/// assert!((b.submerged_volume / displacement - 1.0).abs() < 2e-3); // 1.0e-3 low here
+/// assert!((b.center_of_buoyancy.y + 3.0 * draft / 8.0).abs() < 1e-3 * draft);
+/// # Ok::<(), buoyancy_core::Error>(())
+/// ```
+///
+/// # Errors
+/// [`Error::InvalidShape`] if a length is not finite and positive, `stations < 3` (the two ends
+/// and one section between), `waterlines < 2` (the keel and the design waterline), or there
+/// are too many vertices for `u32` indices (or triangles for memory).
+pub fn wigley_hull<T: Real>(
+    length: f64,
+    beam: f64,
+    draft: f64,
+    freeboard: f64,
+    stations: usize,
+    waterlines: usize,
+) -> Result<Shape<T>, Error> {
+    positive(length, "length")?;
+    positive(beam, "beam")?;
+    positive(draft, "draft")?;
+    positive(freeboard, "freeboard")?;
+    at_least(stations, 3, "stations", "must be at least 3")?;
+    at_least(waterlines, 2, "waterlines", "must be at least 2")?;
+    // Rows j = 0..=m of a side: the keel (j = 0), the waterlines above it (up to the design
+    // waterline, j = m − 1) and the deck edge (j = m); columns i = 0..n, the stations.
+    let (n, m) = (stations, waterlines);
+    indexable(
+        (n - 1)
+            .checked_mul(m)
+            .and_then(|v| v.checked_mul(2))
+            .and_then(|v| v.checked_add(n)),
+        "stations",
+    )?;
+    // The vertex count fits a u32; the triangle count, about twice that, may not fit a 32-bit
+    // usize, and either may not fit in memory: an error, not a panic.
+    let too_large = || Error::InvalidShape {
+        parameter: "stations",
+        reason: "too large: the mesh would not fit in memory",
+    };
+    let triangle_count = (n - 1)
+        .checked_mul(m)
+        .and_then(|t| t.checked_mul(4))
+        .and_then(|t| t.checked_add(2 * (n - 2)))
+        .ok_or_else(too_large)?;
+    let mut triangles = Vec::new();
+    triangles
+        .try_reserve_exact(triangle_count)
+        .map_err(|_| too_large())?;
+    let mut vertices = Vec::new();
+    vertices
+        .try_reserve_exact(2 * (n - 1) * m + n)
+        .map_err(|_| too_large())?;
+    // ξ = 2x/L and ζ = y/T from integers, so that mirrored stations are exact negatives and the
+    // ends and the waterline fall exactly on ξ = ±1 and ζ = 0.
+    let xi = |i: usize| (2.0 * i as f64 - (n - 1) as f64) / (n - 1) as f64;
+    let zeta = |j: usize| (j as f64 - (m - 1) as f64) / (m - 1) as f64;
+    let point = |i: usize, j: usize, side: f64| {
+        let (xi, waterline) = (xi(i), 1.0 - xi(i) * xi(i));
+        let (y, w) = if j == m {
+            (freeboard, beam / 2.0 * waterline)
+        } else {
+            let zeta = zeta(j);
+            (draft * zeta, beam / 2.0 * waterline * (1.0 - zeta * zeta))
+        };
+        Point3::new(length / 2.0 * xi, y, side * w)
+    };
+    // The keel (n vertices), the stem at x = −L/2 and the one at x = L/2 (m each, above the
+    // keel), then the inner vertices of the side z > 0 and of the side z < 0.
+    for i in 0..n {
+        vertices.push(point(i, 0, 0.0));
+    }
+    for i in [0, n - 1] {
+        for j in 1..=m {
+            vertices.push(point(i, j, 0.0));
+        }
+    }
+    for side in [1.0, -1.0] {
+        for i in 1..n - 1 {
+            for j in 1..=m {
+                vertices.push(point(i, j, side));
+            }
+        }
+    }
+    let index = |i: usize, j: usize, positive: bool| -> u32 {
+        (if j == 0 {
+            i
+        } else if i == 0 {
+            n + j - 1
+        } else if i == n - 1 {
+            n + m + j - 1
+        } else {
+            n + 2 * m + if positive { 0 } else { (n - 2) * m } + (i - 1) * m + j - 1
+        }) as u32
+    };
+    // Cells in x < 0 (2i ≤ n − 2) are split along the diagonal from their lower corner at the
+    // smaller x to their upper corner at the larger x, cells in x > 0 along the mirror image:
+    // no diagonal joins two corners on the keel or a stem, so no triangle has its three corners
+    // there (shared by both sides, it would make a flat pair with its twin), and the mesh is
+    // symmetric about x = 0 where a station lies at midship.
+    let forward = |i: usize| 2 * i <= n - 2;
+    for positive in [true, false] {
+        for i in 0..n - 1 {
+            for j in 0..m {
+                let (a, b, c, d) = (
+                    index(i, j, positive),
+                    index(i + 1, j, positive),
+                    index(i + 1, j + 1, positive),
+                    index(i, j + 1, positive),
+                );
+                // Counter-clockwise in (x, y) faces +z: as is on the side z > 0, flipped on the
+                // side z < 0.
+                let pair = if forward(i) {
+                    [[a, b, c], [a, c, d]]
+                } else {
+                    [[a, b, d], [b, c, d]]
+                };
+                for [p, q, r] in pair {
+                    triangles.push(if positive { [p, q, r] } else { [p, r, q] });
+                }
+            }
+        }
+    }
+    // The deck, facing +y: quads (i and i + 1 on the side z > 0, i + 1 and i on the side
+    // z < 0), split like the sides' cells; the end quads are triangles (the stems are shared).
+    for i in 0..n - 1 {
+        let (p, q, r, s) = (
+            index(i, m, true),
+            index(i + 1, m, true),
+            index(i + 1, m, false),
+            index(i, m, false),
+        );
+        if forward(i) {
+            triangles.push([p, q, r]);
+            if i > 0 {
+                triangles.push([p, r, s]);
+            }
+        } else {
+            triangles.push([p, q, s]);
+            if i < n - 2 {
+                triangles.push([q, r, s]);
+            }
+        }
+    }
+    finish(vertices, triangles)
 }
 
 /// Sweeps a circle of radius `r` along a closed curve `u ∈ [0, 2π) ↦ (point, tangent)`, with a
