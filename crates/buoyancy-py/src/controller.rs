@@ -189,6 +189,10 @@ fn core_parts(py: Python<'_>, parts: &[GivenPart]) -> Vec<Part> {
 /// into the freed number. World frame, SI units, torques about each body's center of mass;
 /// quaternions ``(x, y, z, w)``.
 ///
+/// :meth:`step` releases the interpreter lock, so other Python threads run meanwhile; a
+/// controller serves one thread at a time (a call on it from another thread during a step raises
+/// ``RuntimeError``).
+///
 /// Examples
 /// --------
 /// A 1 m cube of 500 kg at rest with its center at the water level gets its weight, 4905 N:
