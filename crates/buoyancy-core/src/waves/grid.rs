@@ -154,7 +154,9 @@ impl<T: Real> HeightGrid<T> {
                 whole as usize
             } else {
                 // `whole` is an integer below 2⁵³ in magnitude here, or beyond it and even.
-                libm::fmod(whole, n as f64).rem_euclid(n as f64) as usize % n
+                let wrapped = libm::fmod(whole, n as f64);
+                let wrapped = if wrapped < 0.0 { wrapped + n as f64 } else { wrapped };
+                wrapped as usize % n
             };
             let next = if index + 1 == n { 0 } else { index + 1 };
             (index, next, fraction)
