@@ -411,13 +411,15 @@ class FloatingBodies:
         self._bodies.remove(i)
         if (force.any() or torque.any()) and body in bodies:
             rb = bodies[body]
-            body_type = rb.body_type
+            body_type, sleeping = rb.body_type, rb.is_sleeping
             if body_type != _DYNAMIC:
-                rb.body_type = _DYNAMIC
+                rb.body_type = _DYNAMIC  # rapier3d's setter wakes the body
             rb.add_force(force.tolist(), False)
             rb.add_torque(torque.tolist(), False)
             if body_type != _DYNAMIC:
                 rb.body_type = body_type
+                if sleeping and not rb.is_sleeping:
+                    rb.sleep()
         return True
 
     def forget_applied(self, body: Hashable) -> None:

@@ -480,8 +480,9 @@ def test_unregister_while_kinematic_takes_the_share_off() -> None:
     kinematic = rapier3d.RigidBodyType.KINEMATIC_POSITION_BASED
     pool.body(h).body_type = kinematic
     pool.step()
+    pool.body(h).sleep()
     assert pool.water.unregister(h, pool.world.rigid_bodies)
-    assert pool.body(h).body_type == kinematic
+    assert pool.body(h).body_type == kinematic and pool.body(h).is_sleeping
     pool.body(h).body_type = DYNAMIC
     assert np.linalg.norm(vec(pool.body(h).user_force)) < 1e-2, pool.body(h).user_force
     assert np.linalg.norm(vec(pool.body(h).user_torque)) < 1e-2
