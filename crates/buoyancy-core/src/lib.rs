@@ -52,6 +52,7 @@ mod error;
 mod frame;
 pub mod froude_krylov;
 mod hierarchy;
+pub mod hydrostatics;
 pub mod io;
 mod mesh;
 mod method;
