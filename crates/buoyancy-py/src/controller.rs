@@ -130,7 +130,7 @@ fn core_parts(py: Python<'_>, parts: &[GivenPart]) -> Vec<Part> {
     parts
         .iter()
         .map(|p| Part {
-            mesh: p.mesh.bind(py).get().core().clone(),
+            mesh: std::sync::Arc::new(p.mesh.bind(py).get().core().clone()),
             shape_to_body: Pose::from_parts(Translation3::from(p.position), p.rotation),
         })
         .collect()

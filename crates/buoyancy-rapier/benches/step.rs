@@ -46,6 +46,7 @@ fn step(c: &mut Criterion) {
             Vector::new(p.x as f32, p.y as f32, p.z as f32)
         })
         .collect();
+    let shape = SharedShape::trimesh(vertices, mesh.triangles().to_vec()).unwrap();
     for i in 0..100 {
         // Half-submerged, tilted and moving: every body has waterline triangles to clip and drag.
         let pose = Pose::from_parts(
@@ -60,9 +61,8 @@ fn step(c: &mut Criterion) {
             .pose(pose)
             .linvel(Vector::new(0.2, -0.5, 0.1))
             .angvel(Vector::new(0.3, 0.0, -0.2));
-        let collider = ColliderBuilder::trimesh(vertices.clone(), mesh.triangles().to_vec())
-            .unwrap()
-            .density(500.0);
+        // One shape for every body, as a scene of many copies has: one mesh for all.
+        let collider = ColliderBuilder::new(shape.clone()).density(500.0);
         let (h, _) = world.insert(body, collider);
         water
             .register(h, &world.bodies, &world.colliders, FloatOptions::default())

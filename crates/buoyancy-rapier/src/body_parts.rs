@@ -4,7 +4,7 @@ use buoyancy_core::controller::Part;
 use rapier3d::prelude::{ColliderHandle, ColliderSet, RigidBodyHandle, RigidBodySet};
 
 use crate::convert::pose_to_nalgebra;
-use crate::shapes::append_meshes;
+use crate::shapes::{MeshCache, append_meshes};
 use crate::{Error, FloatOptions, FloatingColliders};
 
 /// The meshes of the colliders of `body` that `options` selects, each listed once.
@@ -13,6 +13,7 @@ pub(crate) fn mesh_colliders(
     bodies: &RigidBodySet,
     colliders: &ColliderSet,
     options: &FloatOptions,
+    cache: &mut MeshCache,
 ) -> Result<Vec<Part>, Error> {
     let rigid_body = bodies.get(body).ok_or(Error::UnknownBody(body))?;
     let selected: Vec<ColliderHandle> = match &options.colliders {
@@ -43,9 +44,10 @@ pub(crate) fn mesh_colliders(
         };
         append_meshes(
             handle,
-            collider.shape(),
+            collider.shared_shape(),
             shape_to_body,
             options.subdivisions,
+            cache,
             &mut parts,
         )?;
     }

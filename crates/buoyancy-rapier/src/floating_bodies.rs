@@ -12,6 +12,7 @@ use rapier3d::prelude::{ColliderSet, RigidBody, RigidBodyHandle, RigidBodySet, R
 
 use crate::body_parts::mesh_colliders;
 use crate::convert::{point_to_nalgebra, pose_to_nalgebra, vector_to_nalgebra};
+use crate::shapes::MeshCache;
 use crate::{Error, FloatOptions};
 
 /// The bodies that float in one rapier world, and their water: rapier's glue over the core's
@@ -28,6 +29,8 @@ pub struct FloatingBodies {
     /// Each step's states and commands, kept so that a step does not allocate.
     states: Vec<BodyState>,
     commands: Vec<Command>,
+    /// One mesh per rapier shape, shared by the bodies whose colliders share it.
+    meshes: MeshCache,
 }
 
 impl FloatingBodies {
@@ -56,6 +59,7 @@ impl FloatingBodies {
             index: HashMap::new(),
             states: Vec::new(),
             commands: Vec::new(),
+            meshes: MeshCache::default(),
         })
     }
 
@@ -124,8 +128,9 @@ impl FloatingBodies {
         self.index.contains_key(&body)
     }
 
-    /// Makes `body` float: turns its selected colliders into closed meshes (once) and
-    /// remembers them with `options`. Registering a body again replaces its meshes and options
+    /// Makes `body` float: turns its selected colliders into closed meshes (once per rapier
+    /// shape: bodies whose colliders share a `SharedShape` share its mesh) and remembers them
+    /// with `options`. Registering a body again replaces its meshes and options
     /// (the force already applied is kept track of).
     ///
     /// # Errors
@@ -139,7 +144,8 @@ impl FloatingBodies {
         colliders: &ColliderSet,
         options: FloatOptions,
     ) -> Result<(), Error> {
-        let parts = mesh_colliders(body, bodies, colliders, &options)?;
+        self.meshes.prune();
+        let parts = mesh_colliders(body, bodies, colliders, &options, &mut self.meshes)?;
         let overrides = BodyOptions {
             method: options.method,
             water: options.water,
@@ -207,7 +213,7 @@ impl FloatingBodies {
             .and_then(|&i| self.controller.parts(i))
             .into_iter()
             .flatten()
-            .map(|p| (&p.mesh, &p.shape_to_body))
+            .map(|p| (p.mesh.as_ref(), &p.shape_to_body))
     }
 
     /// Computes buoyancy and damping for every registered body at its current pose and

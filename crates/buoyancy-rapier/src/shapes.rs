@@ -1,26 +1,69 @@
 //! Collider shapes to closed triangle meshes, once, at registration.
 
+use std::collections::HashMap;
+use std::sync::Arc;
+
 use buoyancy_core::controller::Part;
 use buoyancy_core::nalgebra::Point3;
 use buoyancy_core::{Mesh, Pose};
-use rapier3d::parry::shape::{Shape, TypedShape};
+use rapier3d::parry::shape::{SharedShape, TypedShape};
 use rapier3d::prelude::ColliderHandle;
 
 use crate::Error;
 use crate::convert::{pose_to_nalgebra, vector_to_nalgebra};
 
-/// Appends the meshes of `shape` (placed on the body by `shape_to_body`) to `parts`.
+/// The meshes made so far, one per rapier shape (a `SharedShape`, told apart by the address of
+/// its data) and number of subdivisions, so that bodies whose colliders share a shape share
+/// one mesh. Each entry holds the shape too, so that its address stays its own.
+#[derive(Clone, Default)]
+pub(crate) struct MeshCache {
+    entries: HashMap<MeshKey, (SharedShape, Arc<Mesh<f64>>)>,
+}
+
+/// The address of a shape's data and a number of subdivisions.
+type MeshKey = (usize, u32);
+
+impl MeshCache {
+    /// Forgets the meshes of shapes no collider holds any more (only the cache does) and that
+    /// no body floats with.
+    pub fn prune(&mut self) {
+        self.entries.retain(|_, (shape, mesh)| {
+            Arc::strong_count(&shape.0) > 1 || Arc::strong_count(mesh) > 1
+        });
+    }
+}
+
+impl std::fmt::Debug for MeshCache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("MeshCache")
+            .field("meshes", &self.entries.len())
+            .finish()
+    }
+}
+
+/// Appends the meshes of `shape` (placed on the body by `shape_to_body`) to `parts`, made once
+/// per shape and number of subdivisions (see [`MeshCache`]).
 ///
 /// Trimeshes are used as they are; cuboids and convex polyhedra exactly; balls, cylinders,
 /// capsules and cones with `subdivisions` segments around (and half as many from pole to pole);
 /// compounds part by part.
 pub(crate) fn append_meshes(
     collider: ColliderHandle,
-    shape: &dyn Shape,
+    shared: &SharedShape,
     shape_to_body: Pose<f64>,
     subdivisions: u32,
+    cache: &mut MeshCache,
     parts: &mut Vec<Part>,
 ) -> Result<(), Error> {
+    let shape = shared.as_ref();
+    let key = (Arc::as_ptr(&shared.0) as *const () as usize, subdivisions);
+    if let Some((_, mesh)) = cache.entries.get(&key) {
+        parts.push(Part {
+            mesh: mesh.clone(),
+            shape_to_body,
+        });
+        return Ok(());
+    }
     let around = subdivisions.max(3);
     // Pole to pole; even so that a capsule's two hemispheres have whole rings.
     let pole_to_pole = (subdivisions / 2).max(2).next_multiple_of(2);
@@ -36,9 +79,10 @@ pub(crate) fn append_meshes(
             for (pose, sub) in c.shapes() {
                 append_meshes(
                     collider,
-                    sub.as_ref(),
+                    sub,
                     shape_to_body * pose_to_nalgebra(pose),
                     subdivisions,
+                    cache,
                     parts,
                 )?;
             }
@@ -60,6 +104,8 @@ pub(crate) fn append_meshes(
         weld_vertices(&mut points, &mut triangles);
     }
     let mesh = Mesh::new(points, triangles).map_err(|source| Error::Mesh { collider, source })?;
+    let mesh = Arc::new(mesh);
+    cache.entries.insert(key, (shared.clone(), mesh.clone()));
     parts.push(Part {
         mesh,
         shape_to_body,

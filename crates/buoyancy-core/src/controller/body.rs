@@ -1,5 +1,6 @@
 //! One floating body: its meshes, its own settings, and the controller's bookkeeping for it.
 
+use alloc::sync::Arc;
 use alloc::vec::Vec;
 
 use super::report::FloatReport;
@@ -8,11 +9,11 @@ use super::share::AppliedShare;
 use crate::{Error, Mesh, Pose};
 
 /// One closed mesh of a body, placed on it: a shape's mesh in the shape's frame, and the pose
-/// of that frame in the body's frame.
+/// of that frame in the body's frame. Bodies of the same shape share one mesh.
 #[derive(Debug, Clone)]
 pub struct Part {
     /// The shape's mesh, in the shape's frame.
-    pub mesh: Mesh<f64>,
+    pub mesh: Arc<Mesh<f64>>,
     /// Shape frame → body frame.
     pub shape_to_body: Pose<f64>,
 }

@@ -76,10 +76,11 @@
 //! use buoyancy_core::controller::{BodyOptions, BodyState, Command, Controller, Motion, Part};
 //! use buoyancy_core::nalgebra::{Matrix3, Point3, Vector3};
 //! use buoyancy_core::{shape, Mesh, Pose};
+//! use std::sync::Arc;
 //!
 //! // A 1 m cube of 500 kg, its center at the water level (half under water), at rest.
 //! let (v, t) = shape::cube::<f64>(1)?;
-//! let part = Part { mesh: Mesh::new(v, t)?, shape_to_body: Pose::identity() };
+//! let part = Part { mesh: Arc::new(Mesh::new(v, t)?), shape_to_body: Pose::identity() };
 //! let mut controller = Controller::default();
 //! let cube = controller.add(vec![part], BodyOptions::default())?;
 //! let state = BodyState {
