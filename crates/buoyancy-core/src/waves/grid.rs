@@ -155,7 +155,11 @@ impl<T: Real> HeightGrid<T> {
             } else {
                 // `whole` is an integer below 2⁵³ in magnitude here, or beyond it and even.
                 let wrapped = libm::fmod(whole, n as f64);
-                let wrapped = if wrapped < 0.0 { wrapped + n as f64 } else { wrapped };
+                let wrapped = if wrapped < 0.0 {
+                    wrapped + n as f64
+                } else {
+                    wrapped
+                };
                 wrapped as usize % n
             };
             let next = if index + 1 == n { 0 } else { index + 1 };
