@@ -16,6 +16,15 @@ pub enum Error {
     EmptyMesh,
     /// A floating body was given no mesh ([`controller`](crate::controller)).
     EmptyBody,
+    /// A loading condition's input is out of range
+    /// ([`LoadingCondition`](crate::hydrostatics::LoadingCondition)).
+    InvalidLoading {
+        /// The input's name: `center_of_gravity`, `mass`, `reference_point`,
+        /// `longitudinal_axis` or `keel`.
+        parameter: &'static str,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
     /// More vertices than a `u32` index can address.
     TooManyVertices {
         /// Number of vertices given.
@@ -119,6 +128,9 @@ impl fmt::Display for Error {
         match self {
             Error::EmptyMesh => write!(f, "the mesh has no triangles"),
             Error::EmptyBody => write!(f, "a floating body needs at least one mesh"),
+            Error::InvalidLoading { parameter, reason } => {
+                write!(f, "invalid loading condition {parameter}: {reason}")
+            }
             Error::TooManyVertices { count } => write!(
                 f,
                 "the mesh has {count} vertices; at most {} can be indexed with u32",

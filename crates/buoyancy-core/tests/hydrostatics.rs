@@ -511,22 +511,36 @@ fn invalid_inputs_are_errors() {
         cube.waterplane(&at(f64::NAN, 0.0, 0.0), &water),
         Err(Error::InvalidPose { .. })
     ));
-    assert!(matches!(
-        LoadingCondition::new(nan),
-        Err(Error::InvalidPose { .. })
-    ));
+    let names = |e: Result<LoadingCondition<f64>, Error>| match e {
+        Err(Error::InvalidLoading { parameter, .. }) => parameter,
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(names(LoadingCondition::new(nan)), "center_of_gravity");
     let loading = LoadingCondition::new(Point3::origin()).unwrap();
     for mass in [-1.0, f64::NAN, f64::INFINITY] {
-        assert!(loading.with_mass(mass).is_err());
+        assert_eq!(names(loading.with_mass(mass)), "mass");
     }
-    assert!(loading.with_reference_point(nan).is_err());
-    assert!(loading.with_keel(nan).is_err());
-    assert!(loading.with_longitudinal_axis(Vector3::zeros()).is_err());
+    assert_eq!(names(loading.with_reference_point(nan)), "reference_point");
+    assert_eq!(names(loading.with_keel(nan)), "keel");
+    assert_eq!(
+        names(loading.with_longitudinal_axis(Vector3::zeros())),
+        "longitudinal_axis"
+    );
     // Along the vertical at this pose: no direction in the waterplane.
     let upright = loading.with_longitudinal_axis(Vector3::y()).unwrap();
     let e = cube
         .hydrostatics(&Pose::identity(), &water, &upright)
         .unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::InvalidLoading {
+                parameter: "longitudinal_axis",
+                ..
+            }
+        ),
+        "{e}"
+    );
     assert!(e.to_string().contains("vertical"), "{e}");
 }
 

@@ -39,12 +39,15 @@ pub struct LoadingCondition<T: Real> {
     keel: Option<Point3<T>>,
 }
 
-/// `Err(InvalidPose)` naming `what` unless every component of `p` is finite.
-fn finite<T: Real>(p: &Vector3<T>, what: &'static str) -> Result<(), Error> {
+/// [`Error::InvalidLoading`] naming `parameter` unless every component of `p` is finite.
+fn finite<T: Real>(p: &Vector3<T>, parameter: &'static str) -> Result<(), Error> {
     if p.iter().all(|x| x.is_finite()) {
         Ok(())
     } else {
-        Err(Error::InvalidPose { reason: what })
+        Err(Error::InvalidLoading {
+            parameter,
+            reason: "has a NaN or infinite component",
+        })
     }
 }
 
@@ -53,12 +56,9 @@ impl<T: Real> LoadingCondition<T> {
     /// default (see the type's documentation).
     ///
     /// # Errors
-    /// [`Error::InvalidPose`] if the point has a NaN or infinite component.
+    /// [`Error::InvalidLoading`] if the point has a NaN or infinite component.
     pub fn new(center_of_gravity: Point3<T>) -> Result<Self, Error> {
-        finite(
-            &center_of_gravity.coords,
-            "the center of gravity has a NaN or infinite component",
-        )?;
+        finite(&center_of_gravity.coords, "center_of_gravity")?;
         Ok(LoadingCondition {
             center_of_gravity,
             mass: None,
@@ -71,11 +71,12 @@ impl<T: Real> LoadingCondition<T> {
     /// The same body with mass `mass` (kg), for the weight's terms of the stiffness.
     ///
     /// # Errors
-    /// [`Error::InvalidPose`] if the mass is negative or not finite.
+    /// [`Error::InvalidLoading`] if the mass is negative or not finite.
     pub fn with_mass(mut self, mass: T) -> Result<Self, Error> {
         if !mass.is_finite() || mass < T::zero() {
-            return Err(Error::InvalidPose {
-                reason: "the mass must be finite and non-negative (kg)",
+            return Err(Error::InvalidLoading {
+                parameter: "mass",
+                reason: "must be finite and non-negative (kg)",
             });
         }
         self.mass = Some(mass);
@@ -86,12 +87,9 @@ impl<T: Real> LoadingCondition<T> {
     /// center of gravity.
     ///
     /// # Errors
-    /// [`Error::InvalidPose`] if the point has a NaN or infinite component.
+    /// [`Error::InvalidLoading`] if the point has a NaN or infinite component.
     pub fn with_reference_point(mut self, point: Point3<T>) -> Result<Self, Error> {
-        finite(
-            &point.coords,
-            "the reference point has a NaN or infinite component",
-        )?;
+        finite(&point.coords, "reference_point")?;
         self.reference_point = Some(point);
         Ok(self)
     }
@@ -100,15 +98,13 @@ impl<T: Real> LoadingCondition<T> {
     /// the transverse moment `I_T` (about this axis) and the roll axis.
     ///
     /// # Errors
-    /// [`Error::InvalidPose`] if the axis is zero or has a NaN or infinite component.
+    /// [`Error::InvalidLoading`] if the axis is zero or has a NaN or infinite component.
     pub fn with_longitudinal_axis(mut self, axis: Vector3<T>) -> Result<Self, Error> {
-        finite(
-            &axis,
-            "the longitudinal axis has a NaN or infinite component",
-        )?;
+        finite(&axis, "longitudinal_axis")?;
         if axis.norm() == T::zero() || !axis.norm().is_finite() {
-            return Err(Error::InvalidPose {
-                reason: "the longitudinal axis is zero or too large to normalise",
+            return Err(Error::InvalidLoading {
+                parameter: "longitudinal_axis",
+                reason: "is zero or too large to normalise",
             });
         }
         self.longitudinal_axis = axis;
@@ -119,12 +115,9 @@ impl<T: Real> LoadingCondition<T> {
     /// lowest point of the mesh.
     ///
     /// # Errors
-    /// [`Error::InvalidPose`] if the point has a NaN or infinite component.
+    /// [`Error::InvalidLoading`] if the point has a NaN or infinite component.
     pub fn with_keel(mut self, keel: Point3<T>) -> Result<Self, Error> {
-        finite(
-            &keel.coords,
-            "the keel point has a NaN or infinite component",
-        )?;
+        finite(&keel.coords, "keel")?;
         self.keel = Some(keel);
         Ok(self)
     }
@@ -237,8 +230,8 @@ impl<T: Real> Mesh<T> {
     ///
     /// # Errors
     /// [`Error::InvalidPose`] if the pose has a NaN or infinite component or a zero
-    /// quaternion, or if the longitudinal axis is vertical at this pose (within `√ε` rad: it
-    /// has no direction in the waterplane); [`Error::NonFiniteResult`] if the result overflows.
+    /// quaternion; [`Error::InvalidLoading`] if the longitudinal axis is vertical at this pose
+    /// (within `√ε` rad: it has no direction in the waterplane); [`Error::NonFiniteResult`] if the result overflows.
     /// (The loading's own values are checked when it is built, see [`LoadingCondition`].)
     pub fn hydrostatics(
         &self,
@@ -252,9 +245,9 @@ impl<T: Real> Mesh<T> {
             &frame.normal_local,
             T::default_epsilon().sqrt(),
         )
-        .ok_or(Error::InvalidPose {
-            reason: "the longitudinal axis is vertical at this pose: it has no direction in \
-                     the waterplane",
+        .ok_or(Error::InvalidLoading {
+            parameter: "longitudinal_axis",
+            reason: "is vertical at this pose: it has no direction in the waterplane",
         })?;
         let waterplane = self.waterplane_in(&frame, &e1)?;
         let buoyancy = self.buoyancy(pose, water, Method::Exact)?;
