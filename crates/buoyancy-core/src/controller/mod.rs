@@ -272,7 +272,8 @@ impl Controller {
             .map(|b| self.settings.resolve(&b.options))
     }
 
-    /// One step of `dt` seconds: for every body `i`, its buoyancy and damping in `states[i]`,
+    /// One step of `dt` seconds (a `dt` that is not finite and non-negative does not advance the
+    /// surface's time): for every body `i`, its buoyancy and damping in `states[i]`,
     /// and in `commands[i]` what to add to the engine's force and torque for it (see the
     /// [module documentation](self)). With the `rayon` feature the bodies are computed in
     /// parallel. No allocation.
@@ -329,6 +330,29 @@ impl Controller {
             .iter_mut()
             .zip(states.iter().zip(commands.iter_mut()))
             .for_each(one);
-        self.time += dt;
+        // A step of no finite, non-negative length leaves the surface's time where it was
+        // (the semi-implicit damping takes the damping as it is for it).
+        if dt.is_finite() && dt >= 0.0 {
+            self.time += dt;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::waves::CalmSurface;
+
+    #[test]
+    fn only_a_finite_non_negative_step_advances_the_time() {
+        let mut controller = Controller::default();
+        controller.set_surface(Some(Arc::new(CalmSurface)));
+        controller.set_time(2.0);
+        for dt in [f64::NAN, f64::INFINITY, -0.5] {
+            controller.step(&[], dt, &mut []);
+            assert_eq!(controller.time(), 2.0, "dt = {dt}");
+        }
+        controller.step(&[], 0.25, &mut []);
+        assert_eq!(controller.time(), 2.25);
     }
 }
