@@ -299,23 +299,19 @@ impl Controller {
             let resolved = settings.resolve(&body.options);
             let evaluation = evaluate(body, state, &resolved, sea, dt);
             body.report = evaluation.report(state.center_of_mass);
-            *command = match evaluation {
-                Evaluation::Inactive => Command::default(),
-                Evaluation::NotFinite => body.share.hold(
-                    state,
-                    nalgebra::Vector3::zeros(),
-                    nalgebra::Vector3::zeros(),
-                    resolved.water.gravity() as f32,
-                    body.size() as f32,
-                ),
-                Evaluation::Floating { force, torque, .. } => body.share.hold(
-                    state,
-                    force,
-                    torque,
-                    resolved.water.gravity() as f32,
-                    body.size() as f32,
-                ),
+            let (force, torque) = match evaluation {
+                Evaluation::Inactive => {
+                    *command = Command::default();
+                    return;
+                }
+                // Not finite: the share goes back to zero.
+                Evaluation::NotFinite => (nalgebra::Vector3::zeros(), nalgebra::Vector3::zeros()),
+                Evaluation::Floating { force, torque, .. } => (force, torque),
             };
+            let gravity = resolved.water.gravity() as f32;
+            *command = body
+                .share
+                .hold(state, force, torque, gravity, body.size() as f32);
         };
         #[cfg(feature = "rayon")]
         {
