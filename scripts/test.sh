@@ -7,11 +7,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo test --workspace --all-features
-# The adapter's serial path (the line above runs it with rayon).
-cargo test -p buoyancy-rapier
-cargo test -p buoyancy-core --no-default-features --lib
-# Builds the examples and the benchmarks (never runs them).
-cargo build --workspace --all-targets --all-features
+# The core without std and rayon: its unit tests, and the controller's bodies stepped one after
+# another (the line above steps them in parallel; tests/controller.rs holds both to the same
+# commands). The adapters have no code of their own that depends on the feature.
+cargo test -p buoyancy-core --no-default-features --lib --test controller
+# Builds the benchmarks (never runs them) with the tests' profile and dependencies; `cargo test`
+# above has built the examples.
+cargo test --workspace --all-features --benches --no-run
 
 echo "== Python: pip install . into a fresh .venv-test, then pytest, the stubs and the linter"
 PYTHON="${PYTHON:-python3}"
