@@ -301,10 +301,8 @@ def test_add_and_index_errors() -> None:
         controller.add(cube, method="bogus")
     with pytest.raises(TypeError, match="^water: expected a buoyancy.Water, got float$"):
         controller.add(cube, water=1000.0)  # type: ignore[arg-type]
-    with pytest.raises(ValueError, match="^water: the controller floats bodies in still water"):
+    with pytest.raises(ValueError, match="^water: a body's water must be still.*the waves are the controller's"):
         controller.add(cube, water=buoyancy.Water(waves=buoyancy.AiryWave(0.1, 5.0)))
-    with pytest.raises(ValueError, match="^water: the controller floats bodies in still water"):
-        controller.water = buoyancy.Water(waves=buoyancy.AiryWave(0.1, 5.0))
     with pytest.raises(TypeError, match="^damping: expected a buoyancy.DampingCoefficients, got buoyancy.Water$"):
         controller.add(cube, damping=buoyancy.Water())  # type: ignore[arg-type]
     with pytest.raises(TypeError, match="^water: expected a buoyancy.Water, got NoneType$"):
@@ -370,7 +368,7 @@ def test_threads_share_nothing() -> None:
         np.testing.assert_array_equal(result, expected)
 
 
-@pytest.mark.parametrize("name", ["Controller", "Controller.add", "FloatReport"])
+@pytest.mark.parametrize("name", ["Controller", "Controller.add", "FloatReport", "shapes.wigley_hull"])
 def test_docstring_examples(name: str) -> None:
     obj: Any = buoyancy
     for part in name.split("."):
@@ -392,3 +390,214 @@ def test_stubs_list_every_public_name() -> None:
         assert re.search(rf"^class {cls.__name__}\b", stub, re.M), cls.__name__
         for name in (n for n in dir(cls) if not n.startswith("_")):
             assert re.search(rf"def {name}\b", stub), f"{cls.__name__}.{name} missing from the stub"
+
+
+# --- waves -------------------------------------------------------------------------------------
+
+SWELL = buoyancy.AiryWave(amplitude=0.1, wavelength=20.0)  # along +x, deep water
+K = 2 * np.pi / 20.0  # rad/m
+OMEGA = np.sqrt(9.81 * K)  # rad/s, deep-water dispersion
+
+
+def tilted() -> np.ndarray:
+    """A unit quaternion (x, y, z, w): 10° about z, then 5° about x."""
+    a, b = np.radians(10.0) / 2, np.radians(5.0) / 2
+    qz = np.array([0.0, 0.0, np.sin(a), np.cos(a)])
+    qx = np.array([np.sin(b), 0.0, 0.0, np.cos(b)])
+    x1, y1, z1, w1 = qx
+    x2, y2, z2, w2 = qz
+    return np.array(
+        [
+            w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+            w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
+            w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
+            w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
+        ]
+    )
+
+
+def held(position: Any, quaternion: Any, center: Any, velocity: Any = (0.0, 0.0, 0.0)) -> dict[str, Any]:
+    """``step``'s pose and velocity arrays of one body held at a pose."""
+    return {
+        "positions": np.array([position], float),
+        "quaternions": np.array([quaternion], float),
+        "centers_of_mass": np.array([center], float),
+        "linear_velocities": np.array([velocity], float),
+    }
+
+
+def test_on_waves_a_body_held_fixed_feels_the_buoyancy_at_the_controllers_time() -> None:
+    # Against the mesh's own buoyancy on the same water at the controller's time: a tilted cube
+    # 0.1 m below its half-submerged height, 1.3 m along the wave, held there for two seconds
+    # (a fifth of a period of the 20 m swell, 3.58 s), no damping.
+    water = buoyancy.Water(waves=SWELL)
+    controller = cubes(1, water=water, damping=buoyancy.DampingCoefficients.off())
+    assert controller.water is water and controller.time == 0.0
+    engine = Engine(controller, 1)
+    cube = buoyancy.shapes.cube()
+    position, q = np.array([1.3, -0.1, 0.4]), tilted()
+    center = position + np.array([0.05, -0.1, 0.0])
+    volumes = []
+    for k in range(120):
+        t = controller.time
+        assert t == pytest.approx(k / 60, abs=1e-12)
+        engine.step(**held(position, q, center))
+        expected = cube.buoyancy(position, q, water=water, about=center, time=t)
+        report = controller.report(0)
+        assert report.outcome == "applied"
+        assert report.submerged_volume == pytest.approx(expected.volume, rel=1e-12)
+        np.testing.assert_allclose(report.center_of_buoyancy, expected.center, atol=1e-12)
+        np.testing.assert_allclose(report.buoyancy_force, expected.force, rtol=1e-12, atol=1e-9)
+        np.testing.assert_allclose(report.buoyancy_torque, expected.torque, rtol=1e-12, atol=1e-9)
+        np.testing.assert_array_equal(report.damping_force, 0.0)
+        # What the engine holds is the buoyancy, in float32 (added up step after step).
+        np.testing.assert_allclose(engine.forces[0], expected.force, rtol=1e-6, atol=1e-3)
+        volumes.append(report.submerged_volume)
+    assert controller.time == pytest.approx(2.0, abs=1e-12)
+    # The wave moved: the volume under water changed by a good part of the wave's 0.1 m.
+    assert max(volumes) - min(volumes) > 0.05
+
+
+def test_on_waves_the_damping_is_relative_to_the_orbital_velocity() -> None:
+    # The deep-water orbital velocity of η = a cos(kx − ωt) at depth y: a ω e^{ky} (cos, sin).
+    water = buoyancy.Water(waves=SWELL)
+    controller = cubes(1, water=water)
+    controller.time = 0.7
+    position = np.array([2.0, -0.2, 0.0])
+    phase = K * position[0] - OMEGA * controller.time
+    orbital = 0.1 * OMEGA * np.exp(K * position[1]) * np.array([np.cos(phase), np.sin(phase), 0.0])
+    # Moving with the water: no damping.
+    controller.step(1 / 60, **states(1, **held(position, IDENTITY, position, orbital)))
+    np.testing.assert_allclose(controller.report(0).damping_force, 0.0, atol=1e-9)
+    np.testing.assert_allclose(controller.report(0).damping_torque, 0.0, atol=1e-9)
+    # At rest in the moving water: dragged along with it.
+    controller.time = 0.7
+    controller.step(1 / 60, **states(1, **held(position, IDENTITY, position)))
+    drag = controller.report(0).damping_force
+    assert np.dot(drag, orbital) > 0.5 * np.linalg.norm(drag) * np.linalg.norm(orbital)
+    # In still water the same body at rest feels no damping.
+    still = cubes(1)
+    still.step(1 / 60, **states(1, **held(position, IDENTITY, position)))
+    np.testing.assert_array_equal(still.report(0).damping_force, 0.0)
+
+
+def test_time_advances_by_dt_and_is_settable() -> None:
+    controller = cubes(2, water=buoyancy.Water(waves=SWELL))
+    for dt in (0.01, 0.25, 0.0, 1 / 60):
+        before = controller.time
+        controller.step(dt, **states(2))
+        assert controller.time == before + dt
+    controller.time = 100.0
+    assert controller.time == 100.0
+    controller.step(0.5, **states(2))
+    assert controller.time == 100.5
+    # A NaN, infinite or negative dt is refused, the time left as it was.
+    for dt in (float("nan"), float("inf"), -0.1):
+        with pytest.raises(ValueError, match="^dt: must be finite and non-negative"):
+            controller.step(dt, **states(2))
+        assert controller.time == 100.5
+    with pytest.raises(ValueError, match="^time: must be finite"):
+        controller.time = float("nan")
+    with pytest.raises(TypeError, match="^time: expected a number"):
+        controller.time = None  # type: ignore[assignment]
+    assert controller.time == 100.5
+    # The time runs in still water too, and a new water keeps it.
+    controller.water = buoyancy.Water()
+    controller.step(0.5, **states(2))
+    assert controller.time == 101.0
+    controller.water = buoyancy.Water(waves=SWELL)
+    assert repr(controller).endswith("method='exact', time=101)")
+
+
+def test_every_surface_of_water_floats_the_bodies() -> None:
+    # An Airy wave, the same as Waves, as a callable, and as a Gerstner wave or a height grid
+    # of the same elevation along a crest: the same buoyancy as the mesh's on that water.
+    cube = buoyancy.shapes.cube(2)
+    position, q = np.array([0.7, 0.05, -0.3]), tilted()
+
+    def airy(points: np.ndarray, t: float) -> np.ndarray:
+        return 0.1 * np.cos(K * points[:, 0] - OMEGA * t)
+
+    x = np.arange(64) * 0.5
+    grid = buoyancy.HeightGrid(np.tile(0.1 * np.cos(2 * np.pi * x / 32.0), (4, 1)), spacing=0.5)
+    for waves in (
+        SWELL,
+        buoyancy.Waves([SWELL]),
+        airy,
+        buoyancy.GerstnerWaves([buoyancy.AiryWave(0.05, 10.0)]),
+        grid,
+    ):
+        water = buoyancy.Water(waves=waves)
+        controller = buoyancy.Controller(water, damping=buoyancy.DampingCoefficients.off())
+        for _ in range(8):  # in parallel: the callable takes the interpreter lock from each thread
+            controller.add(cube)
+        controller.time = 1.25
+        controller.step(
+            1 / 60, **states(8, **{k: np.repeat(v, 8, axis=0) for k, v in held(position, q, position).items()})
+        )
+        expected = cube.buoyancy(position, q, water=water, about=position, time=1.25)
+        for i in range(8):
+            report = controller.report(i)
+            assert report.submerged_volume == pytest.approx(expected.volume, rel=1e-12), waves
+            np.testing.assert_allclose(report.buoyancy_force, expected.force, rtol=1e-12, atol=1e-9)
+    # The callable is the Airy wave: the same force.
+    on_airy = [buoyancy.Controller(buoyancy.Water(waves=w)) for w in (SWELL, airy)]
+    for c in on_airy:
+        c.add(cube)
+        c.step(1 / 60, **states(1, **held(position, q, position)))
+    np.testing.assert_allclose(
+        on_airy[0].report(0).buoyancy_force, on_airy[1].report(0).buoyancy_force, rtol=1e-12, atol=1e-9
+    )
+
+
+def test_a_height_grid_set_between_steps_floats_the_next_step() -> None:
+    grid = buoyancy.HeightGrid(np.zeros((4, 4)), spacing=2.0)
+    controller = cubes(1, water=buoyancy.Water(waves=grid), damping=buoyancy.DampingCoefficients.off())
+    controller.step(1 / 60, **states(1))
+    assert controller.report(0).submerged_volume == pytest.approx(0.5, abs=1e-12)
+    grid.set_heights(np.full((4, 4), 0.2))
+    controller.step(1 / 60, **states(1))
+    assert controller.report(0).submerged_volume == pytest.approx(0.7, abs=1e-12)
+
+
+def test_a_surface_function_that_fails_undoes_the_step() -> None:
+    calls = []
+
+    def surface(points: np.ndarray, t: float) -> np.ndarray:
+        calls.append(t)
+        if len(calls) > 2:
+            raise ZeroDivisionError("the sea broke")
+        return np.full(len(points), 0.1)
+
+    controller = cubes(2, water=buoyancy.Water(waves=surface))
+    engine = Engine(controller, 2)
+    engine.step()
+    assert controller.time == pytest.approx(1 / 60)
+    reports = [controller.report(i) for i in range(2)]
+    forces = engine.forces.copy()
+    with pytest.raises(ZeroDivisionError, match="the sea broke"):
+        engine.step(positions=np.array([[0.0, 0.1, 0.0], [0.0, -0.1, 0.0]]))
+    # Nothing applied, the books and the time as they were.
+    assert controller.time == pytest.approx(1 / 60)
+    assert [controller.report(i) for i in range(2)] == reports
+    np.testing.assert_array_equal(engine.forces, forces)
+    # A function that returns the wrong shape: a ValueError naming the water.
+    controller.water = buoyancy.Water(waves=lambda p, t: np.zeros(2))
+    with pytest.raises(ValueError, match=r"^water: waves: the surface function returned shape \(2,\)"):
+        engine.step()
+    assert controller.time == pytest.approx(1 / 60)
+    # Back to a good one: the step goes on from the books as they were.
+    controller.water = buoyancy.Water(waves=lambda p, t: np.full(len(p), 0.1))
+    f, _, _ = engine.step()
+    np.testing.assert_allclose(f, 0.0, atol=1e-3)  # the buoyancy the engine holds already
+    assert controller.time == pytest.approx(2 / 60)
+
+
+def test_waves_of_the_froude_krylov_pressure_are_refused() -> None:
+    fk = buoyancy.Water(waves=buoyancy.Waves([SWELL], pressure="froude_krylov"))
+    with pytest.raises(ValueError, match="^water: the controller integrates the hydrostatic pressure"):
+        buoyancy.Controller(fk)
+    controller = cubes(1)
+    with pytest.raises(ValueError, match="^water: .*pressure='hydrostatic'"):
+        controller.water = fk
+    assert controller.water.waves is None

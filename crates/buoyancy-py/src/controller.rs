@@ -2,23 +2,34 @@
 //! (`buoyancy_core::controller`), for any engine that can hand over its bodies' states as NumPy
 //! arrays: one call per step for every body, with the interpreter lock released.
 
-use buoyancy_core::controller::{BodyOptions, BodyState, Command, Controller, Part, Settings};
-use buoyancy_core::nalgebra::{Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::{DampingCoefficients, Method, Pose, Water};
+use std::sync::{Arc, Mutex};
+
+use buoyancy_core::controller::{
+    BodyOptions, BodyState, Command, Controller, Part, Settings, SharedSurface,
+};
+use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
+use buoyancy_core::waves::WaterSurface;
+use buoyancy_core::{DampingCoefficients, Error, Method, Pose, Water};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::exceptions::{PyIndexError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple};
 
+use crate::airy::{PyAiryWave, PyWaves};
 use crate::arrays;
 use crate::convert::{self, given};
 use crate::damping::PyDampingCoefficients;
 use crate::errors::{arg_error, to_py, type_error};
 use crate::float_report::PyFloatReport;
+use crate::gerstner::PyGerstnerWaves;
+use crate::height_grid::PyHeightGrid;
 use crate::mesh::PyMesh;
+use crate::pressure::Pressure;
 use crate::step_inputs::{Columns, Input};
+use crate::surface_function::{FunctionFailure, SurfaceFunction};
 use crate::water::PyWater;
+use crate::water_waves::Failure;
 
 /// One part of a body as given: the Python mesh (kept for `parts`), and its shape → body pose.
 struct GivenPart {
@@ -27,8 +38,8 @@ struct GivenPart {
     rotation: UnitQuaternion<f64>,
 }
 
-/// `water`: a still `Water`, or `None` when absent or `None`. Waves are a `ValueError`: the
-/// controller (its damping) assumes a flat surface.
+/// A body's `water`: a still `Water`, or `None` when absent or `None`. Waves are a `ValueError`:
+/// the waves are the controller's, shared by every body.
 fn still_water(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<Water<f64>>> {
     let Some(water) = convert::instance::<PyWater>(obj, name)? else {
         return Ok(None);
@@ -37,10 +48,130 @@ fn still_water(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<Wa
     if water.waves.is_some() {
         return Err(arg_error(
             name,
-            "the controller floats bodies in still water (its damping assumes a flat surface), and this water has waves: pass a Water without waves",
+            "a body's water must be still (its own density, level or normal): the waves are the controller's, shared by every body; give the Water with waves to the Controller (or set Controller.water) and a Water without waves here",
         ));
     }
     Ok(Some(water.inner))
+}
+
+/// A `HeightGrid` as the controller's surface: read at every evaluation, so that heights set in
+/// place between steps are the ones the next step floats the bodies on.
+struct GridSurface(Py<PyHeightGrid>);
+
+impl WaterSurface<f64> for GridSurface {
+    fn elevations(
+        &self,
+        water: &Water<f64>,
+        points: &[Point3<f64>],
+        time: f64,
+        elevations: &mut [f64],
+    ) -> Result<(), Error> {
+        self.0
+            .get()
+            .with_surface(water, |s| s.elevations(water, points, time, elevations))
+    }
+    // No elevation bound: the heights may change (from another thread) between two
+    // evaluations of one step, so every vertex is evaluated.
+}
+
+/// A Python callable `f(points, t)` as the controller's surface. The step runs without the
+/// interpreter lock; each evaluation (one per part of a body) takes it for the call only. The
+/// first failure of a step is kept, for `step` to raise.
+struct FunctionSurface {
+    function: Py<PyAny>,
+    failure: Mutex<Option<FunctionFailure>>,
+}
+
+impl FunctionSurface {
+    /// The first failure since the last call, if any.
+    fn take_failure(&self) -> Option<FunctionFailure> {
+        self.failure
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .take()
+    }
+}
+
+impl WaterSurface<f64> for FunctionSurface {
+    fn elevations(
+        &self,
+        water: &Water<f64>,
+        points: &[Point3<f64>],
+        time: f64,
+        elevations: &mut [f64],
+    ) -> Result<(), Error> {
+        let surface = SurfaceFunction::new(&self.function);
+        let result = surface.elevations(water, points, time, elevations);
+        if let Some(failure) = surface.failure() {
+            let mut first = self.failure.lock().unwrap_or_else(|p| p.into_inner());
+            first.get_or_insert(failure);
+        }
+        result
+    }
+}
+
+/// The controller's water with waves: the `Water` given, the core's surface of its waves, and
+/// that surface again when it is a Python callable (whose failures `step` raises).
+struct Sea {
+    water: Py<PyWater>,
+    surface: SharedSurface,
+    function: Option<Arc<FunctionSurface>>,
+}
+
+/// The controller's `water`: its still plane, and its waves as the core's surface (`None` for
+/// still water). `Waves` of the Froude–Krylov pressure are a `ValueError`: the controller
+/// integrates the hydrostatic pressure of the waves.
+fn controller_water(water: &Bound<'_, PyWater>) -> PyResult<(Water<f64>, Option<Sea>)> {
+    let py = water.py();
+    let inner = water.get().inner;
+    let Some(waves) = &water.get().waves else {
+        return Ok((inner, None));
+    };
+    let given = waves.given(py);
+    let mut function = None;
+    let surface: SharedSurface = if let Ok(wave) = given.cast::<PyAiryWave>() {
+        Arc::new(PyWaves::single(wave.get())?.inner)
+    } else if let Ok(waves) = given.cast::<PyWaves>() {
+        let waves = waves.get();
+        if waves.pressure == Pressure::FroudeKrylov {
+            return Err(arg_error(
+                "water",
+                "the controller integrates the hydrostatic pressure of the waves over each body's wetted surface, and these Waves ask for the Froude–Krylov pressure: give Waves(..., pressure='hydrostatic')",
+            ));
+        }
+        Arc::new(waves.inner.clone())
+    } else if let Ok(waves) = given.cast::<PyGerstnerWaves>() {
+        Arc::new(waves.get().inner.clone())
+    } else if let Ok(grid) = given.cast::<PyHeightGrid>() {
+        Arc::new(GridSurface(grid.clone().unbind()))
+    } else {
+        // `Water` took it: a callable.
+        let surface = Arc::new(FunctionSurface {
+            function: given.unbind(),
+            failure: Mutex::new(None),
+        });
+        function = Some(surface.clone());
+        surface
+    };
+    Ok((
+        inner,
+        Some(Sea {
+            water: water.clone().unbind(),
+            surface,
+            function,
+        }),
+    ))
+}
+
+/// The `water` argument of the controller: a `Water` (`default` when absent or `None`).
+fn water_argument<'py>(
+    py: Python<'py>,
+    obj: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyWater>> {
+    match convert::instance::<PyWater>(obj, "water")? {
+        Some(water) => Ok(water.clone()),
+        None => Bound::new(py, PyWater::still(Water::default())),
+    }
 }
 
 /// `method`, or `None` when absent or `None`.
@@ -148,9 +279,9 @@ fn core_parts(py: Python<'_>, parts: &[GivenPart]) -> Vec<Part> {
 /// Parameters
 /// ----------
 /// water : Water, optional
-///     The water, without waves; default ``Water()`` (fresh, surface ``y = 0``, y up,
-///     ``g = 9.81``). Gravity on the bodies is taken as the water's: ``g`` against its normal,
-///     times each body's gravity scale.
+///     The water, still or with waves; default ``Water()`` (fresh, surface ``y = 0``, y up,
+///     ``g = 9.81``, still). Gravity on the bodies is taken as the water's: ``g`` against its
+///     normal, times each body's gravity scale. See *Waves* below.
 /// method : str
 ///     The buoyancy method (see :data:`buoyancy.METHODS`), default ``"exact"``.
 /// damping : DampingCoefficients, optional
@@ -184,6 +315,25 @@ fn core_parts(py: Python<'_>, parts: &[GivenPart]) -> Vec<Part> {
 ///     the body's mass and inertia, so that light bodies reach the model's terminal velocity and
 ///     bodies dropped fast do not overshoot. A body whose pose, velocity or result is not finite
 ///     gets no force (its share is taken back); its report's outcome is ``"not_finite"``.
+///
+/// Waves
+///     The water may carry waves (``Water(waves=...)``: an :class:`AiryWave`, :class:`Waves`
+///     such as ``Waves.jonswap(...)``, :class:`GerstnerWaves`, a :class:`HeightGrid` or a
+///     callable ``f(points, t)``). The bodies then float on the surface at the controller's
+///     :attr:`time` (s), which every :meth:`step` advances by its ``dt``: the buoyancy is the
+///     hydrostatic pressure ``ρ g (η − h)`` integrated exactly over each part's wetted surface
+///     (``"exact_surface"``; ``method`` is for still water, and ``Waves`` of the Froude–Krylov
+///     pressure are a ``ValueError``), and the damping is taken relative to the water's
+///     velocity at the body's center of mass: the orbital velocity of Airy waves (and
+///     ``Waves``); Gerstner waves, height grids and callables move no water. The waves are the
+///     controller's, shared by every body: a body's own ``water`` must be still.
+///
+///     A callable is called once per part of each body per step, from the threads of the step,
+///     each call holding the interpreter lock (the rest of the step runs without it). If it
+///     raises (or returns other than one finite elevation per point), :meth:`step` raises that
+///     error and the controller is left as it was before the call: nothing applied, the time
+///     not advanced. A :class:`HeightGrid` is read at every evaluation: heights set between two
+///     steps float the bodies at the next one.
 ///
 /// Bodies are numbered from 0 in the order they were added; :meth:`remove` moves the last body
 /// into the freed number. World frame, SI units, torques about each body's center of mass;
@@ -220,6 +370,24 @@ fn core_parts(py: Python<'_>, parts: &[GivenPart]) -> Vec<Part> {
 /// >>> report = controller.report(cube)
 /// >>> report.outcome, report.submerged_volume
 /// ('applied', 0.5)
+///
+/// On a swell 20 m long and 0.2 m high, the cube held at the same place feels the surface at
+/// the controller's time, which the step advanced by ``dt``:
+///
+/// >>> swell = buoyancy.Water(waves=buoyancy.AiryWave(amplitude=0.1, wavelength=20.0))
+/// >>> controller = buoyancy.Controller(swell)
+/// >>> cube = controller.add(buoyancy.shapes.cube())
+/// >>> arrays = dict(positions=np.zeros((1, 3)), quaternions=[[0.0, 0.0, 0.0, 1.0]],
+/// ...               centers_of_mass=np.zeros((1, 3)), linear_velocities=np.zeros((1, 3)),
+/// ...               angular_velocities=np.zeros((1, 3)), masses=[500.0], inverse_masses=[1 / 500],
+/// ...               inverse_inertias=np.eye(3)[None] * 6 / 500, gravity_scales=[1.0],
+/// ...               applied_forces=np.zeros((1, 3), np.float32),
+/// ...               applied_torques=np.zeros((1, 3), np.float32), dynamic=[True], sleeping=[False])
+/// >>> _ = controller.step(0.5, **arrays)               # at t = 0: the crest is on the cube
+/// >>> controller.time                                  # s
+/// 0.5
+/// >>> round(controller.report(cube).submerged_volume, 3)  # m³, 0.5 in still water
+/// 0.599
 #[pyclass(module = "buoyancy", name = "Controller")]
 pub struct PyController {
     inner: Controller,
@@ -228,9 +396,21 @@ pub struct PyController {
     /// Each step's states and commands, kept so that a step does not allocate them.
     states: Vec<BodyState>,
     commands: Vec<Command>,
+    /// The water given, with its waves' surface, when it has waves.
+    sea: Option<Sea>,
 }
 
 impl PyController {
+    /// Makes the bodies float in `water` (its still plane, and its waves if it has any).
+    fn set_sea(&mut self, water: &Bound<'_, PyWater>) -> PyResult<()> {
+        let (inner, sea) = controller_water(water)?;
+        self.inner.settings_mut().water = inner;
+        self.inner
+            .set_surface(sea.as_ref().map(|sea| sea.surface.clone()));
+        self.sea = sea;
+        Ok(())
+    }
+
     /// `index` as a body number, or an `IndexError`.
     fn body(&self, index: &Bound<'_, PyAny>) -> PyResult<usize> {
         let n = self.inner.len();
@@ -263,34 +443,60 @@ impl PyController {
         text_signature = "(water=None, method='exact', damping=None)"
     )]
     fn py_new(
+        py: Python<'_>,
         water: Option<&Bound<'_, PyAny>>,
         method: Option<&Bound<'_, PyAny>>,
         damping: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
+        let water = water_argument(py, water)?;
         let settings = Settings {
-            water: still_water(water, "water")?.unwrap_or_default(),
+            water: Water::default(),
             method: self::method(method)?.unwrap_or(Method::Exact),
             damping: self::damping(damping)?.unwrap_or_default(),
         };
-        Ok(PyController {
+        let mut controller = PyController {
             inner: Controller::new(settings),
             parts: Vec::new(),
             states: Vec::new(),
             commands: Vec::new(),
-        })
+            sea: None,
+        };
+        controller.set_sea(&water)?;
+        Ok(controller)
     }
 
-    /// The controller's water (a body's ``water`` overrides it).
+    /// The controller's water, with its waves if it has any (a body's ``water`` overrides its
+    /// still plane, density and gravity, not the waves). Setting it keeps :attr:`time`.
     #[getter]
-    fn get_water(&self) -> PyWater {
-        PyWater::still(self.inner.settings().water)
+    fn get_water<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyWater>> {
+        match &self.sea {
+            Some(sea) => Ok(sea.water.bind(py).clone()),
+            None => Bound::new(py, PyWater::still(self.inner.settings().water)),
+        }
     }
     #[setter]
     fn set_water(&mut self, water: &Bound<'_, PyAny>) -> PyResult<()> {
         if water.is_none() {
             return Err(type_error("water", "a buoyancy.Water", water));
         }
-        self.inner.settings_mut().water = still_water(Some(water), "water")?.unwrap_or_default();
+        let water = water_argument(water.py(), Some(water))?;
+        self.set_sea(&water)
+    }
+
+    /// The time of the water's waves, s: the bodies are floated on the surface at this time,
+    /// and every :meth:`step` advances it by its ``dt``. Starts at 0; set it to any finite
+    /// number (e.g. to restart a sea, or to match a world's clock). Kept when :attr:`water`
+    /// changes; it also runs in still water.
+    #[getter]
+    fn get_time(&self) -> f64 {
+        self.inner.time()
+    }
+    #[setter]
+    fn set_time(&mut self, time: &Bound<'_, PyAny>) -> PyResult<()> {
+        if time.is_none() {
+            return Err(type_error("time", "a number (s)", time));
+        }
+        self.inner.set_time(convert::time(Some(time), "time")?);
         Ok(())
     }
 
@@ -337,9 +543,13 @@ impl PyController {
     }
 
     fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
-        let water = Bound::new(py, self.get_water())?.repr()?;
+        let water = self.get_water(py)?.repr()?;
+        let time = match self.sea {
+            Some(_) => format!(", time={}", crate::format::g(self.inner.time())),
+            None => String::new(),
+        };
         Ok(format!(
-            "Controller({} bodies, water={water}, method='{}')",
+            "Controller({} bodies, water={water}, method='{}'{time})",
             self.inner.len(),
             self.get_method()
         ))
@@ -359,7 +569,9 @@ impl PyController {
     /// method : str, optional
     ///     This body's method; default the controller's.
     /// water : Water, optional
-    ///     This body's water, without waves; default the controller's.
+    ///     This body's still water (its density, level, normal and gravity); default the
+    ///     controller's. It floats on the controller's waves, if any: a water with waves here
+    ///     is a ``ValueError``.
     /// damping : DampingCoefficients, optional
     ///     This body's damping; default the controller's.
     ///
@@ -503,6 +715,8 @@ impl PyController {
     /// ----------
     /// dt : float
     ///     The step, s, finite and non-negative (the damping's semi-implicit scheme needs it).
+    ///     The bodies are evaluated on the water's waves at :attr:`time`, which then advances
+    ///     by ``dt``.
     /// positions : array_like, shape (N, 3)
     ///     Origin of each body's frame (the frame its parts are placed in), world, m.
     /// quaternions : array_like, shape (N, 4)
@@ -549,7 +763,13 @@ impl PyController {
     /// ValueError
     ///     Naming the argument (and the row) at fault: a shape other than the one above (with
     ///     ``N`` the number of bodies), values that cannot be converted, a non-unit quaternion,
-    ///     negative or non-finite mass properties, a ``dt`` that is negative or not finite.
+    ///     negative or non-finite mass properties, a ``dt`` that is negative or not finite; a
+    ///     water surface given as a callable that returned other than one finite elevation per
+    ///     point (``water: waves: ...``).
+    /// Exception
+    ///     Whatever a water surface given as a callable raised.
+    ///
+    /// After any error nothing was applied and :attr:`time` did not advance.
     #[pyo3(
         signature = (dt, positions, quaternions, centers_of_mass, linear_velocities, angular_velocities, masses, inverse_masses, inverse_inertias, gravity_scales, applied_forces, applied_torques, dynamic, sleeping),
         text_signature = "(self, dt, positions, quaternions, centers_of_mass, linear_velocities, angular_velocities, masses, inverse_masses, inverse_inertias, gravity_scales, applied_forces, applied_torques, dynamic, sleeping)"
@@ -673,6 +893,9 @@ impl PyController {
             dynamic: dynamic.values(),
             sleeping: sleeping.values(),
         };
+        // A Python surface may fail: the step is then undone, as if it had not been called.
+        let function = self.sea.as_ref().and_then(|sea| sea.function.clone());
+        let before = function.as_ref().map(|_| self.inner.clone());
         let (controller, states, commands) =
             (&mut self.inner, &mut self.states, &mut self.commands);
         py.detach(|| {
@@ -682,6 +905,12 @@ impl PyController {
             Ok(())
         })
         .map_err(|rejected: crate::step_inputs::Rejected| rejected.into_py())?;
+        if let Some(failure) = function.and_then(|f| f.take_failure()) {
+            if let Some(before) = before {
+                self.inner = before;
+            }
+            return Err(Failure::Function(failure).into_py(Some("water")));
+        }
 
         let mut forces = Vec::with_capacity(3 * n);
         let mut torques = Vec::with_capacity(3 * n);

@@ -111,3 +111,51 @@ pub fn torus_knot(
             .map_err(|e| to_py(e, None))?,
     )
 }
+
+/// A closed Wigley hull, the parabolic hull form of the seakeeping benchmarks, floating upright
+/// at its design draft: ``length`` L, ``beam`` B and ``draft`` T (m), closed above the design
+/// waterline by a wall-sided topside of ``freeboard`` D (m) and a flat deck; ``stations``
+/// sections along the length and ``waterlines`` levels from the keel to the design waterline
+/// (``4·(stations − 1)·waterlines + 2·(stations − 2)`` triangles: 2,798 for the defaults).
+///
+/// Frame (the frame of ``Water()``, y up): x along the length, ends at ``x = ±L/2``; keel at
+/// ``y = −T``, design waterline at ``y = 0``, deck at ``y = D``; z across the beam. The
+/// half-breadth underwater is ``(B/2)·(1 − (2x/L)²)·(1 − (y/T)²)``, and the topside carries the
+/// waterline straight up. Below ``y = 0`` the hull displaces ``V = 4LBT/9`` (m³) with its center
+/// of buoyancy at ``y = −3T/8``. With an odd number of stations, a body of mass ``ρ·V`` (the
+/// mesh's volume below ``y = 0``) whose center of mass is on the mesh's vertical axis through its
+/// centroid floats in equilibrium at the identity pose. ``ValueError`` naming the argument for a
+/// length that is not finite and positive, ``stations < 3`` or ``waterlines < 2``.
+///
+/// >>> hull = buoyancy.shapes.wigley_hull(4.0, 0.6, 0.25, 0.15)
+/// >>> hull.n_triangles
+/// 2798
+/// >>> below = hull.buoyancy().volume                   # m³ under water at the identity pose
+/// >>> round(below / (4 * 4.0 * 0.6 * 0.25 / 9), 3)    # against 4LBT/9
+/// 0.999
+#[pyfunction]
+#[pyo3(
+    signature = (length=None, beam=None, draft=None, freeboard=None, stations=None, waterlines=None),
+    text_signature = "(length=4.0, beam=0.6, draft=0.25, freeboard=0.15, stations=41, waterlines=17)"
+)]
+pub fn wigley_hull(
+    py: Python<'_>,
+    length: Option<&Bound<'_, PyAny>>,
+    beam: Option<&Bound<'_, PyAny>>,
+    draft: Option<&Bound<'_, PyAny>>,
+    freeboard: Option<&Bound<'_, PyAny>>,
+    stations: Option<&Bound<'_, PyAny>>,
+    waterlines: Option<&Bound<'_, PyAny>>,
+) -> PyResult<PyMesh> {
+    let length = real_or(length, "length", 4.0)?;
+    let beam = real_or(beam, "beam", 0.6)?;
+    let draft = real_or(draft, "draft", 0.25)?;
+    let freeboard = real_or(freeboard, "freeboard", 0.15)?;
+    let stations = count_or(stations, "stations", 41)?;
+    let waterlines = count_or(waterlines, "waterlines", 17)?;
+    PyMesh::build(
+        py,
+        buoyancy_core::shape::wigley_hull(length, beam, draft, freeboard, stations, waterlines)
+            .map_err(|e| to_py(e, None))?,
+    )
+}
