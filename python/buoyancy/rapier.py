@@ -26,6 +26,23 @@ Example (a 1 m crate of density 500 kg/m³ floats half submerged)::
         water.step(world)                          # apply(...), then world.step()
     print(world.rigid_bodies[crate].translation)   # y ≈ 0: half under water
 
+Waves
+    The water may carry waves, ``Water(waves=...)`` (an :class:`~buoyancy.AiryWave`,
+    :class:`~buoyancy.Waves` such as ``Waves.jonswap(...)``, :class:`~buoyancy.GerstnerWaves`, a
+    :class:`~buoyancy.HeightGrid` or a callable ``f(points, t)``): the bodies float on the surface
+    at :attr:`FloatingBodies.time` (s), which every :meth:`~FloatingBodies.apply` advances by its
+    ``dt`` (:meth:`~FloatingBodies.step`: the world's ``integration_parameters.dt``), so the sea
+    runs with the world. The buoyancy is the hydrostatic pressure of the waves integrated exactly
+    over the wetted surface, and the damping is relative to the water's orbital velocity (Airy
+    waves). See :class:`buoyancy.Controller` for the details::
+
+        swell = buoyancy.Water(waves=buoyancy.AiryWave(amplitude=0.1, wavelength=20.0))
+        water = FloatingBodies.for_world(world, water=swell)
+        water.register(buoy, buoyancy.shapes.uv_sphere(0.25))
+        for _ in range(600):
+            water.step(world)                      # 10 s at rapier's 60 Hz
+        print(water.time)                          # ≈ 10.0 s
+
 Sleeping
     rapier puts a body to sleep once it has moved slower than its activation thresholds
     (0.4 m/s by default) for 2 s, and a floating body bobbing gently does so before it reaches
@@ -295,9 +312,9 @@ class FloatingBodies:
         water is fresh (1000 kg/m³), its surface passes through the origin with its up normal
         opposite to gravity, and ``g = |gravity|``.
     water : Water, optional
-        The world's water, without waves (overrides the one derived from ``gravity``). Gravity on
-        the bodies is taken as the water's: ``g`` against its normal, times the body's gravity
-        scale.
+        The world's water, still or with waves (overrides the one derived from ``gravity``).
+        Gravity on the bodies is taken as the water's: ``g`` against its normal, times the body's
+        gravity scale. Its waves run on :attr:`time`.
     method : str
         The buoyancy method (see :data:`buoyancy.METHODS`), default ``"exact"``.
     damping : DampingCoefficients, optional
@@ -333,12 +350,23 @@ class FloatingBodies:
 
     @property
     def water(self) -> Water:
-        """The world's water (still)."""
+        """The world's water, with its waves if it has any (setting it keeps :attr:`time`)."""
         return self._controller.water
 
     @water.setter
     def water(self, water: Water) -> None:
         self._controller.water = water
+
+    @property
+    def time(self) -> float:
+        """The time of the water's waves, s: the bodies are floated on the surface at this time,
+        and every :meth:`apply` advances it by its ``dt``. Starts at 0; settable (a finite
+        number)."""
+        return self._controller.time
+
+    @time.setter
+    def time(self, time: float) -> None:
+        self._controller.time = time
 
     @property
     def method(self) -> str:
@@ -367,7 +395,8 @@ class FloatingBodies:
         return body in self._bodies.index
 
     def __repr__(self) -> str:
-        return f"FloatingBodies({len(self)} bodies, water={self.water!r}, method={self.method!r})"
+        waves = "" if self.water.waves is None else f", time={self.time:g}"
+        return f"FloatingBodies({len(self)} bodies, water={self.water!r}, method={self.method!r}{waves})"
 
     def register(
         self,
@@ -385,7 +414,8 @@ class FloatingBodies:
         or a tuple ``(mesh, position, quaternion)`` of a mesh in its own frame placed on the body
         (``x_body = R @ x_mesh + position``, the quaternion ``(x, y, z, w)``), e.g. one per
         collider with its ``position_wrt_parent``. ``water``, ``method`` and ``damping`` override
-        the world's for this body. Registering a body again replaces its meshes and overrides
+        the world's for this body (``water``: a still one, its density, level and normal; the
+        body floats on the world's waves, if any). Registering a body again replaces its meshes and overrides
         (the force already applied is kept track of)."""
         if not isinstance(mesh, (Mesh, list, tuple)):
             raise TypeError(
@@ -458,7 +488,8 @@ class FloatingBodies:
         """Computes buoyancy and damping for every registered body at its current pose and
         velocity, and sets the body's share of the applied force and torque to it. Call it once
         per step, before the world steps, with the step's ``dt`` (s), which the damping's
-        semi-implicit scheme needs. ``bodies`` is the ``rapier3d.RigidBodySet``
+        semi-implicit scheme needs and by which :attr:`time` then advances (the bodies are
+        evaluated on the waves at the time before the step). ``bodies`` is the ``rapier3d.RigidBodySet``
         (``world.rigid_bodies``). Bodies no longer in ``bodies`` are forgotten; fixed, kinematic
         and disabled bodies get nothing new (their share is left as it is)."""
         if not self._bodies.handles:
@@ -488,7 +519,8 @@ class FloatingBodies:
 
     def step(self, world: Any) -> None:
         """``apply(world.rigid_bodies, world.integration_parameters.dt)``, then ``world.step()``,
-        for a ``rapier3d.PhysicsWorld``."""
+        for a ``rapier3d.PhysicsWorld``: the waves' :attr:`time` advances with the world's (set
+        ``world.integration_parameters.dt`` to change the step)."""
         self.apply(world.rigid_bodies, world.integration_parameters.dt)
         world.step()
 

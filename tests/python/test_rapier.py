@@ -715,12 +715,12 @@ def test_invalid_gravity_is_a_value_error_naming_it(gravity: Any, match: str) ->
 # --- the Python adapter's own -----------------------------------------------------------------
 
 
-def load_example() -> Any:
-    path = REPO / "examples" / "float_rapier.py"
-    spec = importlib.util.spec_from_file_location("float_rapier", path)
+def load_example(name: str = "float_rapier") -> Any:
+    path = REPO / "examples" / f"{name}.py"
+    spec = importlib.util.spec_from_file_location(name, path)
     assert spec is not None and spec.loader is not None
     module = importlib.util.module_from_spec(spec)
-    sys.modules["float_rapier"] = module  # dataclasses look their module up
+    sys.modules[name] = module  # dataclasses look their module up
     spec.loader.exec_module(module)
     return module
 
@@ -1041,3 +1041,145 @@ def test_warnings_are_not_errors_here() -> None:
         pool = Pool()
         pool.half_density_cube(0.2)
         pool.run(0.5)
+
+
+# --- waves.rs -----------------------------------------------------------------------------------
+
+
+def test_a_small_light_buoy_follows_a_long_swell() -> None:
+    # waves.rs a_small_light_buoy_follows_a_long_swell: a ball 0.5 m across, a tenth as dense as
+    # water, in a deep-water swell 20 m long (40 diameters) and 0.2 m high rides the surface:
+    # over the last 5 periods of 60 s its heave has the wave's amplitude within 2 % and its phase
+    # within 5°.
+    amplitude, wavelength = 0.1, 20.0
+    wave = buoyancy.AiryWave(amplitude, wavelength)
+    omega = float(buoyancy.Waves([wave]).angular_frequencies(9.81)[0])
+    pool = Pool(water=buoyancy.Water(waves=wave))
+    buoy = pool.add(
+        rapier3d.RigidBody.dynamic().translation((0.0, 0.05, 0.0)),
+        rapier3d.Collider.ball(0.25).density(100.0),
+        buoyancy.shapes.uv_sphere(0.25, 32, 16),
+    )
+    period = 2 * math.pi / omega
+    start, end = 60.0 - 5 * period, 60.0
+    times, heights = [], []
+    steps = 0
+    while pool.water.time < end:
+        pool.step()
+        steps += 1
+        t = pool.water.time
+        if t >= start:
+            times.append(t)
+            heights.append(pool.body(buoy).center_of_mass.y)
+    assert np.isfinite(heights).all()
+    # Least squares of y = A cos ωt + B sin ωt + C; the wave at x = 0 is a cos ωt: phase 0.
+    t = np.array(times)
+    basis = np.column_stack([np.cos(omega * t), np.sin(omega * t), np.ones_like(t)])
+    (a, b, _), *_ = np.linalg.lstsq(basis, np.array(heights), rcond=None)
+    heave, phase = math.hypot(a, b), math.degrees(math.atan2(b, a))
+    assert abs(heave / amplitude - 1.0) < 0.02, f"heave amplitude {heave} m against {amplitude} m (phase {phase}°)"
+    assert abs(phase) < 5.0, f"phase {phase}° (amplitude {heave} m)"
+    # The time ran with the world: one dt (rapier's float32 1/60 s) per step.
+    assert pool.water.time == pytest.approx(steps * pool.world.integration_parameters.dt, rel=1e-12)
+    print(f"heave {heave / amplitude:.4f} of the wave, phase {phase:.2f}°")
+
+
+def test_the_waves_time_runs_with_the_world_and_is_settable() -> None:
+    swell = buoyancy.Water(waves=buoyancy.AiryWave(0.1, 20.0))
+    pool = Pool(water=swell)
+    assert pool.water.water is swell and pool.water.time == 0.0
+    h = pool.half_density_cube(0.0)
+    pool.world.integration_parameters.dt = 0.01
+    pool.run(0.5)
+    assert pool.water.time == pytest.approx(0.5, abs=1e-6)
+    assert "time=0.5" in repr(pool.water)
+    # At the time set, the body feels the surface then: the crest (t = 0) or the trough (half a period).
+    omega = float(buoyancy.Waves([buoyancy.AiryWave(0.1, 20.0)]).angular_frequencies()[0])
+    volumes = []
+    for t in (0.0, math.pi / omega):
+        pool.water.time = t
+        rb = pool.body(h)
+        pool.apply()
+        assert pool.water.time == pytest.approx(t + 0.01)
+        q = rb.rotation.quaternion
+        expected = buoyancy.shapes.cube().buoyancy(tuple(rb.translation), q, water=swell, time=t)
+        assert pool.water.report(h).submerged_volume == pytest.approx(expected.volume, rel=1e-9)
+        volumes.append(expected.volume)
+    assert volumes[0] - volumes[1] > 0.15  # 0.2 m of wave height on a 1 m cube
+    with pytest.raises(ValueError, match="^time: must be finite"):
+        pool.water.time = math.nan
+    # The adapter's apply refuses a dt the controller cannot take, the time left as it was.
+    before = pool.water.time
+    with pytest.raises(ValueError, match="^dt: "):
+        pool.water.apply(pool.world.rigid_bodies, math.nan)
+    assert pool.water.time == before
+
+
+def test_a_hull_at_its_design_draft_stays_at_rest() -> None:
+    # waves.rs a_hull_at_its_design_draft_stays_at_rest: the demo's Wigley hull placed at its
+    # design draft stays there for 30 s, in still water and with a calm surface (waves of zero
+    # elevation, given as a function: the waves' path).
+    example = load_example("waves_rapier")
+    for calm in (False, True):
+        if calm:
+            water = buoyancy.Water(waves=lambda points, t: np.zeros(len(points)))
+        else:
+            water = buoyancy.Water()
+        speed, spin, drift, turn = example.rest_check(30.0, water=water)
+        assert speed < 1e-4 and spin < 1e-4, f"calm surface {calm}: speed {speed} m/s, spin {spin} rad/s"
+        assert drift < 1e-4 and turn < 1e-3, f"calm surface {calm}: drifted {drift} m, turned {turn}°"
+
+
+def test_two_bodies_ride_ten_minutes_of_a_jonswap_sea() -> None:
+    # waves.rs three_bodies_ride_ten_minutes_of_a_jonswap_sea, with the demo's hull and buoy in
+    # one world, 15 m apart across the waves, on the demo's sea with 32 components (γ = 3.3,
+    # Hs 0.3 m, Tp 2.5 s, seed 7, along x) from rest: for 10 minutes (36,000 steps) every pose
+    # and velocity finite, every body's forces applied, no heave beyond 2·Hs, no speed beyond
+    # 3 m/s, no spin beyond 5 rad/s. So that it takes seconds, the meshes are coarse: the hull
+    # of 11 stations and 5 waterlines (218 triangles), the buoy's cylinder of 24 sides.
+    example = load_example("waves_rapier")
+    hs = 0.3
+    sea = buoyancy.Water(waves=buoyancy.Waves.jonswap(hs, 2.5, gamma=3.3, n=32, seed=7))
+    pool = Pool(water=sea)
+    mesh, density = example.hull_mesh(11, 5)
+    handles = {
+        "hull": example.add_hull(pool.world, pool.water, 0.0, mesh, density),
+        "buoy": example.add_buoy(pool.world, pool.water, 15.0, segments=24),
+    }
+    rest = {name: pool.body(h).center_of_mass.y for name, h in handles.items()}
+    largest = {name: [0.0, 0.0, 0.0] for name in handles}  # heave, speed, spin
+    for step in range(36_000):
+        pool.step()
+        for name, h in handles.items():
+            rb = pool.body(h)
+            v, w = tuple(rb.linvel), tuple(rb.angvel)
+            state = (*tuple(rb.translation), *v, *w)
+            assert all(map(math.isfinite, state)), f"{name} at {step / 60} s: {state}"
+            assert pool.water.report(h).outcome == "applied", f"{name} at {step / 60} s"
+            now = (abs(rb.center_of_mass.y - rest[name]), math.hypot(*v), math.hypot(*w))
+            largest[name] = [max(a, b) for a, b in zip(largest[name], now, strict=True)]
+    assert pool.water.time == pytest.approx(36_000 * pool.world.integration_parameters.dt, rel=1e-12)
+    for name, (heave, speed, spin) in largest.items():
+        print(f"{name}: largest |heave| {heave:.3f} m, speed {speed:.2f} m/s, spin {spin:.2f} rad/s")
+        assert heave <= 2 * hs and speed <= 3.0 and spin <= 5.0, f"{name}: heave {heave}, speed {speed}, spin {spin}"
+
+
+def test_the_waves_example_runs_briefly(tmp_path: Any) -> None:
+    example = load_example("waves_rapier")
+    # The three bodies on the regular wave, 1 s of settling and 6 s of waves (the JONSWAP sea's
+    # ten minutes are the test above).
+    runs, seas, note = example.run(seconds=6.0, settle=1.0, sea_names=("regular",))
+    names = [r.body for r in runs]
+    assert [s.name for s in seas] == ["regular"]
+    if find_sample_mesh("bunny.obj", REPO) is not None:
+        assert note is None and names == ["hull", "bunny", "buoy"]
+    else:
+        assert note is not None and "bunny" in note and names == ["hull", "buoy"]
+    for r in runs:
+        assert len(r.samples) == 6 * 20 + 1
+        assert example.stats(r, stats_from=3.0).verdict == "ok", r.body
+    text = example.table(runs, stats_from=3.0)
+    assert text.count("| ok |") == len(runs)
+    png = tmp_path / "waves_rapier.png"
+    example.plot(runs, seas, png, 6.0, stats_from=3.0)
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
