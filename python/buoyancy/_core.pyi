@@ -56,6 +56,7 @@ __all__ = [
     "torus",
     "torus_knot",
     "uv_sphere",
+    "wigley_hull",
 ]
 
 METHODS: Final[tuple[str, str, str, str, str]]
@@ -557,12 +558,17 @@ class Controller:
     ) -> Controller: ...
     @property
     def water(self) -> Water:
-        """The controller's water (still)."""
+        """The controller's water, with its waves if it has any."""
     @water.setter
     def water(self, water: Water, /) -> None: ...
     @property
+    def time(self) -> float:
+        """The time of the water's waves, s; every ``step`` advances it by its ``dt``."""
+    @time.setter
+    def time(self, time: float, /) -> None: ...
+    @property
     def method(self) -> str:
-        """The controller's buoyancy method, its canonical name."""
+        """The controller's buoyancy method (in still water), its canonical name."""
     @method.setter
     def method(self, method: _MethodName | str, /) -> None: ...
     @property
@@ -627,3 +633,12 @@ def torus_knot(
     segments: int = 80,
     sides: int = 11,
 ) -> Mesh: ...
+def wigley_hull(
+    length: float = 4.0,
+    beam: float = 0.6,
+    draft: float = 0.25,
+    freeboard: float = 0.15,
+    stations: int = 41,
+    waterlines: int = 17,
+) -> Mesh:
+    """A closed Wigley hull floating upright at its design draft (y up, waterline at y = 0)."""
