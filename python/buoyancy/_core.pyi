@@ -270,6 +270,7 @@ class Buoyancy:
         fully_submerged: int = 0,
         partially_submerged: int = 0,
         method: _MethodName | str = "exact",
+        wetted_area: float = 0.0,
     ) -> Buoyancy: ...
     @property
     def volume(self) -> float: ...
@@ -290,6 +291,10 @@ class Buoyancy:
     @property
     def partially_submerged(self) -> int: ...
     @property
+    def wetted_area(self) -> float:
+        """Area of the surface under water, m² (``fast`` and ``fast_surface``: of the triangles
+        entirely under water only)."""
+    @property
     def method(self) -> str: ...
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(
@@ -305,6 +310,7 @@ class Buoyancy:
             int,
             int,
             str,
+            float,
         ],
     ]: ...
 
@@ -331,6 +337,9 @@ class BuoyancyBatch:
     def fully_submerged(self) -> _IntArray: ...
     @property
     def partially_submerged(self) -> _IntArray: ...
+    @property
+    def wetted_area(self) -> _FloatArray:
+        """Shape (K,), m²."""
     @property
     def method(self) -> str: ...
     def __len__(self) -> int: ...

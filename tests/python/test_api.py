@@ -376,9 +376,18 @@ def test_buoyancy_pickles_and_compares_by_value() -> None:
     assert b != knot.buoyancy((0.1, 0.05, 0), (0, 0, 0.6, 0.8), method="improved")  # about differs
     assert b != knot.buoyancy((0.1, 0.05, 0), (0, 0, 0.6, 0.8), method="exact", about=(1, 2, 3))
     built = buoyancy.Buoyancy(
-        b.volume, b.center, b.force, b.torque, b.about, b.fully_submerged, b.partially_submerged, "Improved"
+        b.volume,
+        b.center,
+        b.force,
+        b.torque,
+        b.about,
+        b.fully_submerged,
+        b.partially_submerged,
+        "Improved",
+        wetted_area=b.wetted_area,
     )
     assert built == b
+    assert copy.wetted_area == b.wetted_area > 0
     assert buoyancy.Buoyancy(0.5, (0, 0, 0), (0, 1, 0), (0, 0, 0), (0, 0, 0)).method == "exact"
     with pytest.raises(ValueError, match="^force: has a NaN"):
         buoyancy.Buoyancy(0.5, (0, 0, 0), (0, np.nan, 0), (0, 0, 0), (0, 0, 0))

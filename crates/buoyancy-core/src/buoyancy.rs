@@ -2,9 +2,9 @@
 
 use nalgebra::{Point3, Vector3};
 
-#[cfg(doc)]
-use crate::Method;
 use crate::{Error, Real};
+#[cfg(doc)]
+use crate::{Mesh, Method};
 
 /// The buoyancy of a body: force, its point of application and its torque, world frame, SI units.
 ///
@@ -42,6 +42,27 @@ pub struct Buoyancy<T: Real> {
     pub fully_submerged: usize,
     /// Number of triangles the surface cuts (some vertex above, some below).
     pub partially_submerged: usize,
+    /// Area of the mesh surface under water, m²: of the triangles entirely under water (a
+    /// triangle lying in the surface counts, as in [`fully_submerged`](Self::fully_submerged))
+    /// and of the parts under water of the triangles the surface cuts.
+    ///
+    /// * [`Exact`](Method::Exact), [`Improved`](Method::Improved),
+    ///   [`ExactSurface`](Method::ExactSurface), [`Mesh::buoyancy_in_waves`] and
+    ///   [`Mesh::buoyancy_froude_krylov`]: exact, the area of the wetted pieces (under waves,
+    ///   of the wetted surface those two integrate over: each triangle cut where its linearly
+    ///   interpolated height above the free surface is zero). For a unit cube upright at draft
+    ///   `d`, `1 + 4d`. `Improved` leaves the cut triangles out of its volume, not out of its
+    ///   area: it cuts them anyway.
+    /// * [`Fast`](Method::Fast) and [`FastSurface`](Method::FastSurface): the area of the
+    ///   triangles entirely under water only, what they integrate over. It falls short of the
+    ///   exact area by the wetted parts of the `partially_submerged` triangles, at most their
+    ///   total area, which shrinks with the resolution of the waterline.
+    ///
+    /// Never more than [`Mesh::surface_area`] beyond round-off. A cut triangle's part is its
+    /// area times its share under water (the corner cut off at a vertex is the product of the
+    /// fractions of the two edges leaving it); the hierarchy adds the stored area of the nodes
+    /// entirely under water.
+    pub wetted_area: T,
 }
 
 impl<T: Real> Buoyancy<T> {
@@ -69,28 +90,44 @@ impl<T: Real> Buoyancy<T> {
 
     fn is_finite(&self) -> bool {
         self.submerged_volume.is_finite()
+            && self.wetted_area.is_finite()
             && self.center_of_buoyancy.iter().all(|c| c.is_finite())
             && self.force.iter().all(|c| c.is_finite())
             && self.torque.iter().all(|c| c.is_finite())
     }
 }
 
-/// How many triangles an evaluation found fully and partly under water.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub(crate) struct TriangleCounts {
+/// How many triangles an evaluation found fully and partly under water, and twice the area
+/// under water (see [`Buoyancy::wetted_area`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct TriangleCounts<T: Real> {
     /// Triangles entirely under water (or lying in the surface).
     pub full: usize,
     /// Triangles the waterline cuts.
     pub partial: usize,
+    /// Twice the wetted area, m²: what the method counts of the triangles' `double_area`.
+    pub wetted_area2: T,
 }
 
-impl core::ops::Add for TriangleCounts {
-    type Output = TriangleCounts;
+impl<T: Real> Default for TriangleCounts<T> {
     #[inline]
-    fn add(self, o: TriangleCounts) -> TriangleCounts {
+    fn default() -> Self {
+        TriangleCounts {
+            full: 0,
+            partial: 0,
+            wetted_area2: T::zero(),
+        }
+    }
+}
+
+impl<T: Real> core::ops::Add for TriangleCounts<T> {
+    type Output = TriangleCounts<T>;
+    #[inline]
+    fn add(self, o: TriangleCounts<T>) -> TriangleCounts<T> {
         TriangleCounts {
             full: self.full + o.full,
             partial: self.partial + o.partial,
+            wetted_area2: self.wetted_area2 + o.wetted_area2,
         }
     }
 }

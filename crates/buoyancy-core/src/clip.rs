@@ -45,6 +45,25 @@ pub(crate) struct WaterlineCut<T: Real> {
     pub heights: [T; 3],
     pub ab: Vector3<T>,
     pub ca: Vector3<T>,
+    /// Where the edges leaving `a` are cut: `ab = a + (b − a)·fractions[0]` and
+    /// `ca = a + (c − a)·fractions[1]`, each in `[0, 1]`.
+    pub fractions: [T; 2],
+}
+
+impl<T: Real> WaterlineCut<T> {
+    /// The share of the triangle's area under water. The corner `(a, ab, ca)` spans
+    /// `fractions[0]·(b − a)` and `fractions[1]·(c − a)`: it is `fractions[0]·fractions[1]` of
+    /// the triangle, the part under water when `a` is, else the rest. No square root: times the
+    /// triangle's precomputed area, the wetted area.
+    #[inline(always)]
+    pub fn wetted_share(&self) -> T {
+        let corner = self.fractions[0] * self.fractions[1];
+        if self.odd_is_below {
+            corner
+        } else {
+            T::one() - corner
+        }
+    }
 }
 
 /// Cuts triangle `p` (vertex heights `h`) at the waterline.
@@ -71,14 +90,16 @@ pub(crate) fn cut_at_waterline<T: Real>(p: [Vector3<T>; 3], h: [T; 3]) -> Waterl
     let (i1, i2) = ((odd + 1) % 3, (odd + 2) % 3);
     let (a, b, c) = (p[odd], p[i1], p[i2]);
     let (ha, hb, hc) = (h[odd], h[i1], h[i2]);
+    let fractions = [ha / (ha - hb), ha / (ha - hc)];
     WaterlineCut {
         odd_is_below,
         a,
         b,
         c,
         heights: [ha, hb, hc],
-        ab: a + (b - a) * (ha / (ha - hb)),
-        ca: a + (c - a) * (ha / (ha - hc)),
+        ab: a + (b - a) * fractions[0],
+        ca: a + (c - a) * fractions[1],
+        fractions,
     }
 }
 
@@ -103,6 +124,7 @@ pub(crate) fn clip_below<T: Real>(
         heights: [ha, hb, hc],
         ab,
         ca,
+        ..
     } = cut_at_waterline(p, h);
     if odd_is_below {
         // Submerged: (a, ab, ca), whose boundary runs ab → ca along the waterline.
@@ -159,6 +181,36 @@ mod tests {
         });
         assert_eq!(parts, 2);
         assert!((total - area(&p) * 0.75).norm() < 1e-15);
+    }
+
+    #[test]
+    fn wetted_share_is_the_clipped_area() {
+        // Every way the plane crosses a scalene triangle, a vertex in the plane included: the
+        // share times the area is the area of the pieces `clip_below` emits.
+        let p = [
+            Vector3::new(0.2, -0.3, 0.1),
+            Vector3::new(1.3, 0.4, -0.2),
+            Vector3::new(-0.4, 1.1, 0.6),
+        ];
+        let whole = area(&p).norm();
+        for h in [
+            [-1.0, 0.5, 2.0],
+            [1.0, -0.5, 2.0],
+            [1.0, 0.5, -2.0],
+            [-1.0, -0.5, 2.0],
+            [1.0, -0.5, -2.0],
+            [-1.0, 0.5, -2.0],
+            [-1.0, 0.0, 2.0],
+            [0.0, 3.0, -0.7],
+            [-1e-9, 1.0, 1.0],
+            [1e-9, -1.0, -1.0],
+        ] {
+            let mut clipped = 0.0;
+            clip_below(p, h, |q, _| clipped += area(&q).norm());
+            let share = cut_at_waterline(p, h).wetted_share();
+            assert!((0.0..=1.0).contains(&share), "{h:?}: {share}");
+            assert!((share * whole - clipped).abs() < 1e-15, "{h:?}");
+        }
     }
 
     #[test]

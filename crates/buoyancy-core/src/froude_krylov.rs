@@ -463,10 +463,13 @@ impl<T: Real> Mesh<T> {
             match classify(&h) {
                 TriangleClass::Submerged => {
                     counts.full += 1;
+                    counts.wetted_area2 += self.double_areas[i];
                     piece(v);
                 }
                 TriangleClass::Cut => {
                     counts.partial += 1;
+                    counts.wetted_area2 +=
+                        cut_at_waterline(v, h).wetted_share() * self.double_areas[i];
                     clip_below(v, h, |q, _| piece(q));
                 }
                 TriangleClass::Dry => {}

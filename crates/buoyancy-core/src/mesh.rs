@@ -76,6 +76,10 @@ pub struct Mesh<T: Real> {
     pub(crate) tetra_moment24: Vec<Vector3<T>>,
     /// Per triangle (leaf order), its outward unit normal and twice its area.
     pub(crate) normals: Vec<TriangleNormal<T>>,
+    /// Per triangle (leaf order), twice its area again: what the volume methods, which sum
+    /// precomputed terms, add to the wetted area for a triangle under water. On its own, so
+    /// that they read one number a triangle for it rather than a normal's four.
+    pub(crate) double_areas: Vec<T>,
     /// Largest distance of a vertex from the centroid.
     pub(crate) bounding_radius: T,
     /// Length of the longest edge, m.
@@ -130,11 +134,13 @@ impl<T: Real> Mesh<T> {
                 volume6,
                 moment24,
                 area2,
+                double_area: area2.norm(),
                 surface: SurfaceMoments::triangle(layout.corners(i).map(|v| v.map(T::to_f64))),
             }
         });
         let (mut volume_scale, mut surface_area) = (0.0, 0.0);
-        let (mut tetra_volume6, mut tetra_moment24, mut normals) = (
+        let (mut tetra_volume6, mut tetra_moment24, mut normals, mut double_areas) = (
+            Vec::with_capacity(order.len()),
             Vec::with_capacity(order.len()),
             Vec::with_capacity(order.len()),
             Vec::with_capacity(order.len()),
@@ -145,6 +151,7 @@ impl<T: Real> Mesh<T> {
             surface_area += normal.double_area / 2.0;
             tetra_volume6.push(T::from_f64_lossy(terms.volume6));
             tetra_moment24.push(terms.moment24.map(T::from_f64_lossy));
+            double_areas.push(T::from_f64_lossy(normal.double_area));
             normals.push(normal.cast());
         }
         let bounding_radius = relative.iter().map(|v| v.norm()).fold(0.0, f64::max);
@@ -166,6 +173,7 @@ impl<T: Real> Mesh<T> {
             tetra_volume6,
             tetra_moment24,
             normals,
+            double_areas,
             bounding_radius: T::from_f64_lossy(bounding_radius),
             longest_edge: T::from_f64_lossy(longest_edge),
             surface_area: T::from_f64_lossy(surface_area),
@@ -267,8 +275,10 @@ impl<T: Real> Mesh<T> {
 
     /// Bytes of memory taken by the bounding-volume hierarchy of
     /// [`Traversal::Hierarchy`](crate::Traversal::Hierarchy): its nodes with the volume and
-    /// surface sums, the triangles' copy in leaf order, and the per-vertex terms of the walk
-    /// under waves (see [`Mesh::buoyancy_in_waves`]).
+    /// surface sums and their area (for [`Buoyancy::wetted_area`](crate::Buoyancy::wetted_area):
+    /// one number per node beside the volume sums, one per inner node beside the surface sums),
+    /// the triangles' copy in leaf order, and the per-vertex terms of the walk under waves (see
+    /// [`Mesh::buoyancy_in_waves`]).
     pub fn hierarchy_bytes(&self) -> usize {
         self.hierarchy.memory()
             + self.node_sums.memory()

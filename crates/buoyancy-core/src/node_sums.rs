@@ -9,10 +9,13 @@
 //!   `Σ detᵢ·(aᵢ + bᵢ + cᵢ)` with `detᵢ = aᵢ·(bᵢ×cᵢ)`: six times the volume and twenty-four
 //!   times the first moment of the tetrahedra from the centroid to its triangles, what `Fast`
 //!   sums over the fully submerged triangles, and `Σ (bᵢ − aᵢ)×(cᵢ − aᵢ)`, which moves the
-//!   tetrahedra's apex onto the water plane for `Exact` and `Improved` ([`VolumeNodeSums`]);
+//!   tetrahedra's apex onto the water plane for `Exact` and `Improved`, and
+//!   `Σ |(bᵢ − aᵢ)×(cᵢ − aᵢ)|`, twice the area, what a node under water adds to the wetted area
+//!   ([`VolumeNodeSums`]);
 //! * for the surface methods, every inner node stores the 30 coefficients of its triangles'
-//!   pressure integrals as polynomials in the water plane ([`SurfaceMoments`]); leaves hold at
-//!   most a few triangles, which a query integrates directly, so they store nothing.
+//!   pressure integrals as polynomials in the water plane, and their area beside them, where the
+//!   surface walk reads it ([`SurfaceMoments`]); leaves hold at most a few triangles, which a
+//!   query integrates directly, so they store nothing.
 
 use alloc::vec::Vec;
 
@@ -30,6 +33,8 @@ pub(crate) struct TriangleTerms {
     pub moment24: Vector3<f64>,
     /// `(b − a)×(c − a)`, twice the area vector.
     pub area2: Vector3<f64>,
+    /// `|(b − a)×(c − a)|`, twice the area.
+    pub double_area: f64,
     /// The coefficients of its pressure integrals.
     pub surface: SurfaceMoments<f64>,
 }
@@ -43,6 +48,35 @@ pub(crate) struct VolumeNodeSums<T: Real> {
     pub moment24: Vector3<T>,
     /// `Σ (b − a)×(c − a)`: twice the sum of their area vectors.
     pub area2: Vector3<T>,
+    /// `Σ |(b − a)×(c − a)|`: twice their area, m².
+    pub double_area: T,
+}
+
+impl VolumeNodeSums<f64> {
+    fn zero() -> Self {
+        VolumeNodeSums {
+            volume6: 0.0,
+            moment24: Vector3::zeros(),
+            area2: Vector3::zeros(),
+            double_area: 0.0,
+        }
+    }
+
+    fn add(&mut self, o: &Self) {
+        self.volume6 += o.volume6;
+        self.moment24 += o.moment24;
+        self.area2 += o.area2;
+        self.double_area += o.double_area;
+    }
+
+    fn cast<T: Real>(&self) -> VolumeNodeSums<T> {
+        VolumeNodeSums {
+            volume6: T::from_f64_lossy(self.volume6),
+            moment24: self.moment24.map(T::from_f64_lossy),
+            area2: self.area2.map(T::from_f64_lossy),
+            double_area: T::from_f64_lossy(self.double_area),
+        }
+    }
 }
 
 /// The sums of every node of a [`Hierarchy`], indexed by node.
@@ -64,7 +98,7 @@ impl<T: Real> NodeSums<T> {
         let mut builder = Builder {
             hierarchy,
             terms,
-            volume: alloc::vec![(0.0, Vector3::zeros(), Vector3::zeros()); count],
+            volume: alloc::vec![VolumeNodeSums::zero(); count],
             surface_slots: alloc::vec![u32::MAX; count],
             surface: Vec::new(),
         };
@@ -72,15 +106,7 @@ impl<T: Real> NodeSums<T> {
             builder.subtree(0);
         }
         NodeSums {
-            volume: builder
-                .volume
-                .iter()
-                .map(|&(volume6, moment24, area2)| VolumeNodeSums {
-                    volume6: T::from_f64_lossy(volume6),
-                    moment24: moment24.map(T::from_f64_lossy),
-                    area2: area2.map(T::from_f64_lossy),
-                })
-                .collect(),
+            volume: builder.volume.iter().map(VolumeNodeSums::cast).collect(),
             surface_slots: builder.surface_slots,
             surface: builder.surface.iter().map(SurfaceMoments::cast).collect(),
         }
@@ -109,28 +135,25 @@ impl<T: Real> NodeSums<T> {
 struct Builder<'a, T: Real, F> {
     hierarchy: &'a Hierarchy<T>,
     terms: F,
-    volume: Vec<(f64, Vector3<f64>, Vector3<f64>)>,
+    volume: Vec<VolumeNodeSums<f64>>,
     surface_slots: Vec<u32>,
     surface: Vec<SurfaceMoments<f64>>,
 }
 
 impl<T: Real, F: Fn(usize) -> TriangleTerms> Builder<'_, T, F> {
     /// The sums of the subtree at `index`, recording those of its nodes.
-    fn subtree(
-        &mut self,
-        index: usize,
-    ) -> ((f64, Vector3<f64>, Vector3<f64>), SurfaceMoments<f64>) {
+    fn subtree(&mut self, index: usize) -> (VolumeNodeSums<f64>, SurfaceMoments<f64>) {
         let (volume, surface) = match self.hierarchy.children(index) {
             None => {
-                let (mut volume, mut surface) = (
-                    (0.0, Vector3::zeros(), Vector3::zeros()),
-                    SurfaceMoments::zero(),
-                );
+                let (mut volume, mut surface) = (VolumeNodeSums::zero(), SurfaceMoments::zero());
                 for i in self.hierarchy.range(index) {
                     let t = (self.terms)(i);
-                    volume.0 += t.volume6;
-                    volume.1 += t.moment24;
-                    volume.2 += t.area2;
+                    volume.add(&VolumeNodeSums {
+                        volume6: t.volume6,
+                        moment24: t.moment24,
+                        area2: t.area2,
+                        double_area: t.double_area,
+                    });
                     surface.add(&t.surface);
                 }
                 (volume, surface)
@@ -141,9 +164,7 @@ impl<T: Real, F: Fn(usize) -> TriangleTerms> Builder<'_, T, F> {
                 self.surface.push(SurfaceMoments::zero());
                 let (mut volume, mut surface) = self.subtree(left);
                 let (right_volume, right_surface) = self.subtree(right);
-                volume.0 += right_volume.0;
-                volume.1 += right_volume.1;
-                volume.2 += right_volume.2;
+                volume.add(&right_volume);
                 surface.add(&right_surface);
                 self.surface[slot] = surface;
                 (volume, surface)

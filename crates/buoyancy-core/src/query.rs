@@ -124,11 +124,12 @@ impl<T: Real> Mesh<T> {
         self.volume_scale * T::default_epsilon() * T::from_f64_lossy(64.0)
     }
 
-    /// The result, with the torque about the center of mass.
+    /// The result, with the torque about the center of mass; the wetted area is half of
+    /// `counts.wetted_area2`.
     pub(crate) fn finish(
         &self,
         frame: &Frame<T>,
-        counts: TriangleCounts,
+        counts: TriangleCounts<T>,
         submerged_volume: T,
         center_of_buoyancy: Point3<T>,
         force: Vector3<T>,
@@ -142,6 +143,7 @@ impl<T: Real> Mesh<T> {
             torque_point: frame.center_of_mass,
             fully_submerged: counts.full,
             partially_submerged: counts.partial,
+            wetted_area: counts.wetted_area2 * T::from_f64_lossy(0.5),
         }
     }
 }

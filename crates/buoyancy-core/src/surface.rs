@@ -36,8 +36,8 @@ pub(crate) struct SurfaceSums<T: Real> {
     pub torque24: Vector3<T>,
     /// Σ (n·2A)·(w − q n/2) = 24·(first moment of the submerged volume about `o`).
     pub moment24: Vector3<T>,
-    /// Triangles found fully and partly under water.
-    pub counts: TriangleCounts,
+    /// Triangles found fully and partly under water, and twice their wetted area.
+    pub counts: TriangleCounts<T>,
 }
 
 impl<T: Real> Sums for SurfaceSums<T> {
@@ -63,14 +63,14 @@ impl<T: Real> Sums for SurfaceSums<T> {
 
 impl<T: Real> SurfaceSums<T> {
     /// Adds the pressure integrals of triangle `r` (positions relative to `o`) whose vertices
-    /// have heights `h` above the plane of unit up normal `n`.
+    /// have heights `h` above the plane of unit up normal `n`, and returns its `2A`.
     ///
     /// The first moment uses `r = r⊥ + (n·r) n` with `n·r = h − h_o` (`h_o` the height of `o`):
     /// `∫_V r dV = ∫_S h r⊥ (n·dA) + n ∫_S (h²/2 − h_o h)(n·dA)
     ///          = ∫_S h r (n·dA) − (n/2) ∫_S h² (n·dA)`,
     /// the `h_o` terms cancelling, so `o` may be anywhere.
     #[inline(always)]
-    pub fn add_triangle(&mut self, n: &Vector3<T>, r: [Vector3<T>; 3], h: [T; 3]) {
+    pub fn add_triangle(&mut self, n: &Vector3<T>, r: [Vector3<T>; 3], h: [T; 3]) -> Vector3<T> {
         let area2 = (r[1] - r[0]).cross(&(r[2] - r[0]));
         let sum_h = h[0] + h[1] + h[2];
         let w = r[0] * h[0] + r[1] * h[1] + r[2] * h[2] + (r[0] + r[1] + r[2]) * sum_h;
@@ -78,34 +78,54 @@ impl<T: Real> SurfaceSums<T> {
         self.force6 += area2 * sum_h;
         self.torque24 += w.cross(&area2);
         self.moment24 += (w - n * (q * T::from_f64_lossy(0.5))) * n.dot(&area2);
+        area2
     }
 
     /// Adds `sign` times [`add_triangle`](Self::add_triangle) of the corner `[a, ab, ca]` cut
     /// off a triangle at the waterline, whose heights are `[h_a, 0, 0]`: then `Σh = h_a`,
-    /// `w = h_a (2a + ab + ca)` and `q = 2h_a²`.
+    /// `w = h_a (2a + ab + ca)` and `q = 2h_a²`. Returns the corner's `2A` times `sign`.
     #[inline(always)]
-    pub fn add_corner(&mut self, n: &Vector3<T>, [a, ab, ca]: [Vector3<T>; 3], h_a: T, sign: T) {
+    pub fn add_corner(
+        &mut self,
+        n: &Vector3<T>,
+        [a, ab, ca]: [Vector3<T>; 3],
+        h_a: T,
+        sign: T,
+    ) -> Vector3<T> {
         let area2 = (ab - a).cross(&(ca - a)) * sign;
         let w = (a + a + ab + ca) * h_a;
         self.force6 += area2 * h_a;
         self.torque24 += w.cross(&area2);
         self.moment24 += (w - n * (h_a * h_a)) * n.dot(&area2);
+        area2
     }
 
     /// Adds the pressure integrals of the wetted part of triangle `v` (vertex heights `h` above
-    /// the surface, linear over the triangle; up normal `n`) and counts it: the whole triangle
-    /// if it is submerged; if the waterline cuts it, with `exact` its part under water (the
-    /// corner at the odd vertex, or the whole triangle minus it), else nothing.
+    /// the surface, linear over the triangle; up normal `n`) and counts it, with its area
+    /// (`double_area` is the triangle's stored `2A`): the whole triangle if it is submerged; if
+    /// the waterline cuts it, with `exact` its part under water (the corner at the odd vertex,
+    /// or the whole triangle minus it, times its share [`WaterlineCut::wetted_share`] of the
+    /// area: no square root), else nothing.
     #[inline(always)]
-    pub fn add_wetted_part(&mut self, n: &Vector3<T>, v: [Vector3<T>; 3], h: [T; 3], exact: bool) {
+    pub fn add_wetted_part(
+        &mut self,
+        n: &Vector3<T>,
+        v: [Vector3<T>; 3],
+        h: [T; 3],
+        exact: bool,
+        double_area: &T,
+    ) {
         match classify(&h) {
             TriangleClass::Submerged => {
                 self.add_triangle(n, v, h);
                 self.counts.full += 1;
+                self.counts.wetted_area2 += *double_area;
             }
             TriangleClass::Cut => {
                 self.counts.partial += 1;
                 if exact {
+                    let cut = cut_at_waterline(v, h);
+                    self.counts.wetted_area2 += cut.wetted_share() * *double_area;
                     let WaterlineCut {
                         odd_is_below,
                         a,
@@ -113,7 +133,7 @@ impl<T: Real> SurfaceSums<T> {
                         ca,
                         heights,
                         ..
-                    } = cut_at_waterline(v, h);
+                    } = cut;
                     if odd_is_below {
                         self.add_corner(n, [a, ab, ca], heights[0], T::one());
                     } else {
@@ -142,7 +162,7 @@ impl<T: Real> Mesh<T> {
         // Positions relative to the centroid.
         let triangle = |s: &mut SurfaceSums<T>, i: usize| {
             let v = self.corners(i);
-            s.add_wetted_part(&n, v, frame.heights(&v), exact);
+            s.add_wetted_part(&n, v, frame.heights(&v), exact, &self.double_areas[i]);
         };
         let sums = if hierarchy {
             self.surface_walk(frame, parallel, triangle)
@@ -154,8 +174,10 @@ impl<T: Real> Mesh<T> {
 
     /// The surface sums over the hierarchy: the triangles of the leaves the surface crosses go
     /// through `triangle`; the inner nodes entirely under water add their stored coefficients,
-    /// evaluated once at the end (see [`crate::surface_moments`]), and the leaves entirely under
-    /// water pass their few triangles through `triangle` too. In parallel as
+    /// evaluated once at the end (see [`crate::surface_moments`]), with their area; the leaves
+    /// entirely under water, which store no coefficients, integrate their few triangles whole
+    /// (every vertex lies below the surface by more than its round-off: each triangle is
+    /// submerged, as `triangle` would find) and add their stored area. In parallel as
     /// [`Hierarchy::reduce`](crate::hierarchy::Hierarchy::reduce) says.
     fn surface_walk(
         &self,
@@ -171,24 +193,29 @@ impl<T: Real> Mesh<T> {
             n,
             frame.height,
             parallel,
-            &|walk: &mut WalkSums<T>, visit| {
-                let range = match visit {
-                    Visit::SubmergedNode {
-                        node,
-                        triangle_count,
-                    } => match self.node_sums.surface(node) {
-                        Some(moments) => {
-                            walk.nodes.add(moments);
-                            walk.triangles.counts.full += triangle_count as usize;
-                            return;
-                        }
+            &|walk: &mut WalkSums<T>, visit| match visit {
+                Visit::SubmergedNode {
+                    node,
+                    triangle_count,
+                } => {
+                    let sums = &mut walk.triangles;
+                    sums.counts.full += triangle_count as usize;
+                    match self.node_sums.surface(node) {
+                        Some(moments) => walk.nodes.add(moments),
                         // A leaf: no stored coefficients.
-                        None => self.hierarchy.range(node),
-                    },
-                    Visit::CrossedLeaf { triangles } => triangles,
-                };
-                for i in range {
-                    triangle(&mut walk.triangles, i);
+                        None => {
+                            for i in self.hierarchy.range(node) {
+                                let v = self.corners(i);
+                                sums.add_triangle(n, v, frame.heights(&v));
+                            }
+                            sums.counts.wetted_area2 += self.node_sums.volume(node).double_area;
+                        }
+                    }
+                }
+                Visit::CrossedLeaf { triangles } => {
+                    for i in triangles {
+                        triangle(&mut walk.triangles, i);
+                    }
                 }
             },
         );

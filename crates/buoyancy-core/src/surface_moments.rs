@@ -22,6 +22,8 @@
 //! flat water plane, by `a` (3 numbers), `G` (9) and `T` (18): 30 numbers, summed once in `f64`
 //! at build time. Because the polynomials are linear in the coefficients, the coefficients of
 //! all nodes taken whole in one query are first added up and the polynomial is evaluated once.
+//! Beside them a group keeps its area, `Σ |A|`, which it adds to the wetted area whatever the
+//! plane.
 //!
 //! Sums about the mesh centroid keep the digits of a mesh far from its own origin, as elsewhere.
 
@@ -55,6 +57,8 @@ pub(crate) struct SurfaceMoments<T: Real> {
     pub area_position: Matrix3<T>,
     /// `T[(j, l)] = Σ Qⱼₗ A` for the six pairs `j ≤ l` of [`PAIRS`].
     pub second: [Vector3<T>; 6],
+    /// `Σ |A|`: twice the area, for the wetted area (a constant, not a polynomial).
+    pub double_area: T,
 }
 
 impl<T: Real> SurfaceMoments<T> {
@@ -63,6 +67,7 @@ impl<T: Real> SurfaceMoments<T> {
             area2: Vector3::zeros(),
             area_position: Matrix3::zeros(),
             second: [Vector3::zeros(); 6],
+            double_area: T::zero(),
         }
     }
 
@@ -73,11 +78,13 @@ impl<T: Real> SurfaceMoments<T> {
         for (a, b) in self.second.iter_mut().zip(&other.second) {
             *a += b;
         }
+        self.double_area += other.double_area;
     }
 
     /// Adds to `sums` the force, pressure moment and volume moment of the group, with the up
     /// normal `n` (unit) and the centroid's height `height`, both in the mesh frame: exactly
-    /// what [`SurfaceSums::add_triangle`] adds for each triangle of the group.
+    /// what [`SurfaceSums::add_triangle`] adds for each triangle of the group; and its area to
+    /// the wetted area.
     pub fn add_to(&self, n: &Vector3<T>, height: T, sums: &mut SurfaceSums<T>) {
         let g = &self.area_position;
         let t = &self.second;
@@ -104,6 +111,7 @@ impl<T: Real> SurfaceMoments<T> {
             + eight * height * n.dot(&gn)
             + twelve * height * height * n.dot(&self.area2);
         sums.moment24 += mn + gtn * (four * height) - n * (q * T::from_f64_lossy(0.5));
+        sums.counts.wetted_area2 += self.double_area;
     }
 }
 
@@ -120,6 +128,7 @@ impl SurfaceMoments<f64> {
             area2,
             area_position: area2 * s.transpose(),
             second: PAIRS.map(|(j, l)| area2 * q[(j, l)]),
+            double_area: area2.norm(),
         }
     }
 
@@ -129,6 +138,7 @@ impl SurfaceMoments<f64> {
             area2: self.area2.map(T::from_f64_lossy),
             area_position: self.area_position.map(T::from_f64_lossy),
             second: self.second.map(|v| v.map(T::from_f64_lossy)),
+            double_area: T::from_f64_lossy(self.double_area),
         }
     }
 }

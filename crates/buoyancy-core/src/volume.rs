@@ -34,8 +34,8 @@ pub(crate) struct VolumeSums<T: Real> {
     pub volume6: T,
     /// Σ det·(a+b+c) = 24·first moment about `o`.
     pub moment24: Vector3<T>,
-    /// Triangles found fully and partly under water.
-    pub counts: TriangleCounts,
+    /// Triangles found fully and partly under water, and twice their wetted area.
+    pub counts: TriangleCounts<T>,
 }
 
 impl<T: Real> Sums for VolumeSums<T> {
@@ -154,6 +154,7 @@ impl<T: Real> WithSubmergedNodes<T> for VolumeSums<T> {
         self.volume6 += node.volume6;
         self.moment24 += node.moment24;
         self.counts.full += triangle_count as usize;
+        self.counts.wetted_area2 += node.double_area;
     }
 }
 
@@ -276,8 +277,8 @@ impl<T: Real> Mesh<T> {
         )
     }
 
-    /// `Fast`'s contribution of triangle `i`: its precomputed tetrahedron to the centroid if it
-    /// is fully under water.
+    /// `Fast`'s contribution of triangle `i`: its precomputed tetrahedron to the centroid, and
+    /// its area, if it is fully under water.
     #[inline(always)]
     fn fast_triangle(&self, frame: &Frame<T>, s: &mut VolumeSums<T>, i: usize) {
         match classify(&frame.heights(&self.corners(i))) {
@@ -285,14 +286,16 @@ impl<T: Real> Mesh<T> {
                 s.volume6 += self.tetra_volume6[i];
                 s.moment24 += self.tetra_moment24[i];
                 s.counts.full += 1;
+                s.counts.wetted_area2 += self.double_areas[i];
             }
             TriangleClass::Cut => s.counts.partial += 1,
             TriangleClass::Dry => {}
         }
     }
 
-    /// `Exact`'s contribution of triangle `i`, about the centroid, in `exact`; with `improved`,
-    /// its clipped part about `apex` in `clipped` too.
+    /// `Exact`'s contribution of triangle `i`, about the centroid, in `exact` (with its wetted
+    /// area: all of it, or its share under water if the waterline cuts it); with `improved`, its
+    /// clipped part about `apex` in `clipped` too.
     #[inline(always)]
     fn exact_triangle<const ROBUST: bool>(
         &self,
@@ -310,6 +313,7 @@ impl<T: Real> Mesh<T> {
                 exact.volume6 += self.tetra_volume6[i];
                 exact.moment24 += self.tetra_moment24[i];
                 exact.counts.full += 1;
+                exact.counts.wetted_area2 += self.double_areas[i];
                 let zero = T::zero();
                 let r = frame.round_off;
                 if ROBUST && (h[0] < -r || h[1] < -r || h[2] < -r) {
@@ -335,6 +339,8 @@ impl<T: Real> Mesh<T> {
                 // (apex, ca, ab) give `det = a·x − apex·x`. When `a` is the one vertex above,
                 // the submerged part is the whole triangle (its precomputed tetrahedron) minus
                 // (a, ab, ca), and the cap's triangle is reversed: the same terms, negated.
+                let cut = cut_at_waterline(v, h);
+                exact.counts.wetted_area2 += cut.wetted_share() * self.double_areas[i];
                 let WaterlineCut {
                     odd_is_below,
                     a,
@@ -343,7 +349,7 @@ impl<T: Real> Mesh<T> {
                     ab,
                     ca,
                     ..
-                } = cut_at_waterline(v, h);
+                } = cut;
                 // The submerged part's area vector, (a, ab, ca) or the quadrilateral
                 // (ab, b, c, ca) from its diagonals, and its tetrahedron from `apex`.
                 if ROBUST {

@@ -33,7 +33,9 @@
 //! The result is a [`Buoyancy`]: `submerged_volume` is the volume implied by the vertical force,
 //! `n·F/(ρ·g)`; `center_of_buoyancy` is a point of the force's line of action (the central axis
 //! of the force and torque): the one nearest the still-water center of buoyancy formula applied
-//! to the wetted surface, which under still water lies on that line already.
+//! to the wetted surface, which under still water lies on that line already. `wetted_area` is
+//! the area of the wetted pieces, exact: the cut triangles' shares of their area, the whole
+//! triangles' areas, and the submerged nodes' stored sums.
 
 use alloc::vec::Vec;
 
@@ -149,7 +151,9 @@ impl<T: Real> Mesh<T> {
                     node,
                     triangle_count,
                 } => {
-                    walk.triangles.counts.full += triangle_count as usize;
+                    let counts = &mut walk.triangles.counts;
+                    counts.full += triangle_count as usize;
+                    counts.wetted_area2 += self.node_sums.volume(node).double_area;
                     for i in self.hierarchy.range(node) {
                         walk.quadratic += self.quadratic_term(&n, i, &heights);
                     }
@@ -205,7 +209,7 @@ impl<T: Real> Mesh<T> {
             heights[c as usize],
         ];
         walk.triangles
-            .add_wetted_part(&frame.normal_local, v, h, true);
+            .add_wetted_part(&frame.normal_local, v, h, true, &self.double_areas[i]);
         let Some(reach) = reach else { return };
         let still = frame.heights(&v);
         if still.iter().all(|s| *s >= -reach) {
@@ -343,7 +347,7 @@ impl<T: Real> Mesh<T> {
                 heights[b as usize],
                 heights[c as usize],
             ];
-            s.add_wetted_part(&n, self.corners(i), h, true);
+            s.add_wetted_part(&n, self.corners(i), h, true, &self.double_areas[i]);
         };
         let sums = reduce(self.triangles.len(), false, &triangle);
         self.wave_result(&frame, water, sums).checked()
@@ -573,6 +577,13 @@ mod tests {
             (a.fully_submerged, a.partially_submerged),
             (b.fully_submerged, b.partially_submerged)
         );
+        // Areas to 1e-12 of 1 m² plus the wetted area (these meshes have a few m²).
+        assert!(
+            (a.wetted_area - b.wetted_area).abs() < 1e-12 * (1.0 + a.wetted_area),
+            "{} {}",
+            a.wetted_area,
+            b.wetted_area
+        );
     }
 
     #[test]
@@ -631,6 +642,67 @@ mod tests {
                     .unwrap();
                 close(&calm, &flat, scale);
             }
+        }
+    }
+
+    /// The wetted area of the walk: Exact Surface's in calm water, whether the walk takes the
+    /// still-water path (a calm surface) or walks the layer of a surface that says it may be
+    /// 0.3 m off (deep vertices, crossed leaves, submerged nodes adding their stored area);
+    /// under waves, the scan's, triangle by triangle. And it is the area: between that of the
+    /// fully submerged triangles and the mesh's.
+    #[test]
+    fn wetted_area_of_the_walk() {
+        let sphere = mesh(shape::uv_sphere(0.8, 40, 20));
+        let airy = AiryWaves::new(
+            alloc::vec![AiryComponent {
+                amplitude: 0.15,
+                wavelength: 2.5,
+                direction: Vector3::new(0.6, 0.0, 0.8),
+                phase: 0.2,
+            }],
+            None,
+        )
+        .unwrap();
+        let water = Water::default();
+        for k in 0..16 {
+            let angle = 0.41 * k as f64;
+            let pose = Pose::from_parts(
+                Translation3::new(0.2, 1.0 - 0.13 * k as f64, -0.1),
+                UnitQuaternion::from_euler_angles(angle, 0.3, 0.5 * angle),
+            );
+            let exact = sphere
+                .buoyancy(&pose, &water, Method::ExactSurface)
+                .unwrap();
+            let fast = sphere.buoyancy(&pose, &water, Method::FastSurface).unwrap();
+            for surface in [&CalmSurface as &dyn WaterSurface<f64>, &FlatWithBound] {
+                let calm = sphere
+                    .buoyancy_in_waves(&pose, &water, surface, 0.0)
+                    .unwrap();
+                let tol = 1e-12 * sphere.surface_area();
+                assert!(
+                    (calm.wetted_area - exact.wetted_area).abs() < tol,
+                    "{k}: {} vs {}",
+                    calm.wetted_area,
+                    exact.wetted_area
+                );
+            }
+            assert!(fast.wetted_area <= exact.wetted_area);
+            assert!(exact.wetted_area <= sphere.surface_area() * (1.0 + 1e-12));
+            let time = 0.3 * k as f64;
+            let walk = sphere
+                .buoyancy_in_waves(&pose, &water, &airy, time)
+                .unwrap();
+            let scan = sphere
+                .buoyancy_in_waves_scan(&pose, &water, &airy, time)
+                .unwrap();
+            let tol = 1e-12 * sphere.surface_area();
+            assert!(
+                (walk.wetted_area - scan.wetted_area).abs() < tol,
+                "{k}: {} vs {}",
+                walk.wetted_area,
+                scan.wetted_area
+            );
+            assert!(walk.wetted_area <= sphere.surface_area() * (1.0 + 1e-12));
         }
     }
 

@@ -13,17 +13,19 @@ use common::{all_meshes, assert_close, assert_close_v, pose, pose_at_height, ref
 use proptest::prelude::*;
 use proptest::sample::Index;
 
-/// Scales of a mesh in a given water: volume, length, force, torque.
+/// Scales of a mesh in a given water: volume, length, force, torque, area.
 struct Scales {
     volume: f64,
     length: f64,
     force: f64,
     torque: f64,
+    area: f64,
 }
 
 fn scales(mesh: &Mesh<f64>, water: &Water<f64>) -> Scales {
     let weight = water.density() * water.gravity();
     Scales {
+        area: mesh.surface_area(),
         volume: mesh.volume(),
         length: mesh.bounding_radius(),
         force: weight * mesh.volume(),
@@ -48,6 +50,13 @@ fn assert_same(what: &str, a: &Buoyancy<f64>, b: &Buoyancy<f64>, s: &Scales, tol
         tol,
         s.torque,
     );
+    assert_close(
+        &format!("{what}: wetted area"),
+        a.wetted_area,
+        b.wetted_area,
+        tol,
+        s.area,
+    );
     if a.submerged_volume.abs() > 1e-9 * s.volume {
         // The center of a sliver is defined only up to round-off over its volume.
         let tol = tol * s.volume / a.submerged_volume.abs();
@@ -68,6 +77,85 @@ fn flipped(water: &Water<f64>) -> Water<f64> {
         .unwrap()
 }
 
+/// The height of every vertex of triangle `t` above the surface, world frame, and its
+/// corners there.
+fn world_triangle(
+    mesh: &Mesh<f64>,
+    pose: &Pose<f64>,
+    water: &Water<f64>,
+    t: &[u32; 3],
+) -> ([Point3<f64>; 3], [f64; 3]) {
+    let p = t.map(|i| pose * mesh.vertex(i as usize));
+    let n = water.normal().into_inner();
+    (p, p.map(|p| n.dot(&p.coords) - water.level()))
+}
+
+/// The wetted area computed independently of the library: every triangle moved to the world
+/// frame, clipped against the half-space under the surface by Sutherland–Hodgman (a vertex in
+/// the surface is under water) and its polygon's area summed from its fan by square roots.
+fn reference_wetted_area(mesh: &Mesh<f64>, pose: &Pose<f64>, water: &Water<f64>) -> f64 {
+    let mut area = 0.0;
+    let mut polygon = Vec::with_capacity(4);
+    for t in mesh.triangles() {
+        let (p, h) = world_triangle(mesh, pose, water, t);
+        polygon.clear();
+        for k in 0..3 {
+            let j = (k + 1) % 3;
+            if h[k] <= 0.0 {
+                polygon.push(p[k]);
+            }
+            if (h[k] < 0.0 && h[j] > 0.0) || (h[k] > 0.0 && h[j] < 0.0) {
+                polygon.push(p[k] + (p[j] - p[k]) * (h[k] / (h[k] - h[j])));
+            }
+        }
+        for k in 1..polygon.len().saturating_sub(1) {
+            let (a, b, c) = (polygon[0], polygon[k], polygon[k + 1]);
+            area += (b - a).cross(&(c - a)).norm() / 2.0;
+        }
+    }
+    area
+}
+
+/// The area of the triangles with no vertex above the surface (world frame): what `Fast` and
+/// `FastSurface` count as wetted.
+fn fully_submerged_area(mesh: &Mesh<f64>, pose: &Pose<f64>, water: &Water<f64>) -> f64 {
+    mesh.triangles()
+        .iter()
+        .map(|t| world_triangle(mesh, pose, water, t))
+        .filter(|(_, h)| h.iter().all(|h| *h <= 0.0))
+        .map(|(p, _)| (p[1] - p[0]).cross(&(p[2] - p[0])).norm() / 2.0)
+        .sum()
+}
+
+/// The wetted area of every method by every traversal lies between zero and the mesh's surface
+/// area: the exact methods' (`Improved` included) is the clipped area, `Fast`'s and
+/// `FastSurface`'s the area of the triangles entirely under water, never more.
+fn check_wetted_area(name: &str, mesh: &Mesh<f64>, pose: &Pose<f64>, water: &Water<f64>) {
+    let total = mesh.surface_area();
+    let clipped = reference_wetted_area(mesh, pose, water);
+    let full = fully_submerged_area(mesh, pose, water);
+    assert!(
+        full <= clipped + 1e-12 * total,
+        "{name}: {full} > {clipped}"
+    );
+    for method in Method::ALL {
+        for traversal in Traversal::ALL {
+            let b = mesh.buoyancy_with(pose, water, method, traversal).unwrap();
+            let what = format!("{name}, {method}, {traversal:?}: wetted area");
+            assert!(
+                b.wetted_area >= 0.0 && b.wetted_area <= total * (1.0 + 1e-12),
+                "{what} {} of {total}",
+                b.wetted_area
+            );
+            let expected = match method {
+                Method::Fast | Method::FastSurface => full,
+                Method::Improved | Method::Exact | Method::ExactSurface => clipped,
+            };
+            assert_close(&what, b.wetted_area, expected, 1e-12, total);
+        }
+    }
+}
+
 fn check_exact_invariants(name: &str, mesh: &Mesh<f64>, pose: &Pose<f64>, water: &Water<f64>) {
     let s = scales(mesh, water);
     let exact = mesh.buoyancy(pose, water, Method::Exact).unwrap();
@@ -85,6 +173,16 @@ fn check_exact_invariants(name: &str, mesh: &Mesh<f64>, pose: &Pose<f64>, water:
     assert_eq!(exact.partially_submerged, surface.partially_submerged);
 
     // Against the independent clip.
+    let area = reference_wetted_area(mesh, pose, water);
+    for b in [&exact, &surface] {
+        assert_close(
+            &format!("{name}: wetted area vs reference"),
+            b.wetted_area,
+            area,
+            1e-12,
+            s.area,
+        );
+    }
     let r = reference(mesh, pose, water);
     assert_close(
         &format!("{name}: volume vs reference"),
@@ -133,6 +231,15 @@ fn check_exact_invariants(name: &str, mesh: &Mesh<f64>, pose: &Pose<f64>, water:
         mesh.volume(),
         1e-12,
         s.volume,
+    );
+    // Every triangle is wetted below or above but for the pieces cut off, and no triangle lies
+    // in a random plane.
+    assert_close(
+        &format!("{name}: wetted area below + above"),
+        exact.wetted_area + above.wetted_area,
+        mesh.surface_area(),
+        1e-12,
+        s.area,
     );
     let com = pose * mesh.centroid();
     let moments = (exact.center_of_buoyancy - com) * exact.submerged_volume
@@ -207,6 +314,32 @@ proptest! {
     }
 
     #[test]
+    fn wetted_area_never_exceeds_the_surface_area(
+        which in any::<Index>(),
+        water in water_strategy(),
+        height in height_strategy(),
+        offset in uniform3(-2.0, 2.0),
+        u in unit3(),
+    ) {
+        let meshes = all_meshes();
+        let (name, mesh) = which.get(&meshes);
+        let pose = pose_at_height(mesh, &water, height, Vector3::from(offset), u);
+        check_wetted_area(name, mesh, &pose, &water);
+    }
+
+    #[test]
+    fn wetted_area_never_exceeds_the_surface_area_of_star_meshes(
+        radii in prop::collection::vec(0.3..1.7f64, 86),
+        water in water_strategy(),
+        height in height_strategy(),
+        u in unit3(),
+    ) {
+        let mesh = star_mesh(&radii);
+        let pose = pose_at_height(&mesh, &water, height, Vector3::zeros(), u);
+        check_wetted_area("star", &mesh, &pose, &water);
+    }
+
+    #[test]
     fn all_methods_agree_when_fully_submerged(
         which in any::<Index>(),
         water in water_strategy(),
@@ -224,6 +357,7 @@ proptest! {
             let b = mesh.buoyancy(&pose, &water, method).unwrap();
             assert_same(&format!("{name}, {method}"), &b, &exact, &s, 1e-12);
             assert_eq!((b.fully_submerged, b.partially_submerged), (mesh.triangle_count(), 0));
+            assert_close(&format!("{name}, {method}: wetted area"), b.wetted_area, mesh.surface_area(), 1e-12, s.area);
         }
     }
 
@@ -331,6 +465,7 @@ proptest! {
                 force: b.force / scale.powi(3),
                 torque: b.torque / scale.powi(4),
                 torque_point: b.torque_point / scale,
+                wetted_area: b.wetted_area / scale.powi(2),
                 ..b
             };
             assert_same(&format!("{name}, {method}, ×{scale:e}"), &a, &back, &s, 1e-11);

@@ -20,6 +20,7 @@ pub struct Row {
     pub about: [f64; 3],
     pub fully_submerged: usize,
     pub partially_submerged: usize,
+    pub wetted_area: f64,
 }
 
 impl Row {
@@ -32,6 +33,7 @@ impl Row {
             about: b.torque_point.coords.into(),
             fully_submerged: b.fully_submerged,
             partially_submerged: b.partially_submerged,
+            wetted_area: b.wetted_area,
         }
     }
 }
@@ -43,8 +45,20 @@ fn tuple(v: &[f64; 3]) -> V3 {
 }
 
 /// `Buoyancy(volume, center, force, torque, about, fully_submerged, partially_submerged,
-/// method)`'s arguments.
-type BuoyancyArgs = (f64, V3, V3, V3, V3, usize, usize, &'static str);
+/// method, wetted_area)`'s arguments.
+type BuoyancyArgs = (f64, V3, V3, V3, V3, usize, usize, &'static str, f64);
+
+/// The `wetted_area` argument of `Buoyancy(...)`: a finite number, at least 0; 0 when absent.
+fn wetted_area_argument(obj: Option<&Bound<'_, PyAny>>) -> PyResult<f64> {
+    let area = convert::real_or(obj, "wetted_area", 0.0)?;
+    if !(area.is_finite() && area >= 0.0) {
+        return Err(crate::errors::arg_error(
+            "wetted_area",
+            format!("must be finite and at least 0 (m²), got {area}"),
+        ));
+    }
+    Ok(area)
+}
 
 /// The buoyancy of a body at one pose, world frame, SI units (m, m³, N, N·m).
 ///
@@ -63,12 +77,19 @@ type BuoyancyArgs = (f64, V3, V3, V3, V3, usize, usize, &'static str);
 ///     of mass (the mesh centroid moved by the pose).
 /// fully_submerged, partially_submerged : int
 ///     Number of triangles entirely under water, and cut by the surface.
+/// wetted_area : float
+///     Area of the mesh surface under water, m²: of the triangles entirely under water and of
+///     the parts under water of those the surface cuts. Exact for ``"exact"``, ``"improved"``,
+///     ``"exact_surface"`` and under waves (the wetted surface the pressure is integrated over);
+///     ``"fast"`` and ``"fast_surface"`` count the triangles entirely under water only, what they
+///     integrate over. A unit cube upright at draft ``d`` has ``1 + 4 d``.
 /// method : str
 ///     The method that computed it.
 ///
 /// ``Buoyancy(volume, center, force, torque, about, fully_submerged=0, partially_submerged=0,
-/// method="exact")`` builds one (for unpickling and tests). It is immutable, compares by value
-/// and pickles; each array attribute returns a new, read-only array.
+/// method="exact", wetted_area=0.0)`` builds one (for unpickling and tests). It is immutable,
+/// compares by value (every attribute) and pickles; each array attribute returns a new,
+/// read-only array.
 ///
 /// Examples
 /// --------
@@ -89,8 +110,8 @@ pub struct PyBuoyancy {
 impl PyBuoyancy {
     #[new]
     #[pyo3(
-        signature = (volume, center, force, torque, about, fully_submerged=None, partially_submerged=None, method=None),
-        text_signature = "(volume, center, force, torque, about, fully_submerged=0, partially_submerged=0, method='exact')"
+        signature = (volume, center, force, torque, about, fully_submerged=None, partially_submerged=None, method=None, wetted_area=None),
+        text_signature = "(volume, center, force, torque, about, fully_submerged=0, partially_submerged=0, method='exact', wetted_area=0.0)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn py_new(
@@ -102,6 +123,7 @@ impl PyBuoyancy {
         fully_submerged: Option<&Bound<'_, PyAny>>,
         partially_submerged: Option<&Bound<'_, PyAny>>,
         method: Option<&Bound<'_, PyAny>>,
+        wetted_area: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         Ok(PyBuoyancy {
             row: Row {
@@ -116,6 +138,7 @@ impl PyBuoyancy {
                     "partially_submerged",
                     0,
                 )?,
+                wetted_area: wetted_area_argument(wetted_area)?,
             },
             method: convert::method(method)?,
         })
@@ -150,6 +173,10 @@ impl PyBuoyancy {
         self.row.partially_submerged
     }
     #[getter]
+    fn wetted_area(&self) -> f64 {
+        self.row.wetted_area
+    }
+    #[getter]
     fn method(&self) -> &'static str {
         self.method.name()
     }
@@ -180,6 +207,7 @@ impl PyBuoyancy {
                 r.fully_submerged,
                 r.partially_submerged,
                 b.method.name(),
+                r.wetted_area,
             ),
         )
     }
@@ -196,6 +224,8 @@ impl PyBuoyancy {
 /// about : ndarray, shape (K, 3)
 ///     The point each torque is taken about.
 /// fully_submerged, partially_submerged : ndarray of int64, shape (K,)
+/// wetted_area : ndarray, shape (K,)
+///     Area under water, m², as :attr:`Buoyancy.wetted_area`.
 /// method : str
 ///
 /// ``len(batch)`` is K; ``batch[k]`` is the :class:`Buoyancy` of pose ``k``. The arrays are
@@ -212,6 +242,7 @@ pub struct PyBuoyancyBatch {
     about: Py<PyArray2<f64>>,
     fully_submerged: Py<PyArray1<i64>>,
     partially_submerged: Py<PyArray1<i64>>,
+    wetted_area: Py<PyArray1<f64>>,
 }
 
 impl PyBuoyancyBatch {
@@ -227,6 +258,7 @@ impl PyBuoyancyBatch {
             about: rows3(|r| r.about),
             fully_submerged: counts(|r| r.fully_submerged),
             partially_submerged: counts(|r| r.partially_submerged),
+            wetted_area: arrays::column(py, rows.iter().map(|r| r.wetted_area)).unbind(),
             rows,
             method,
         }
@@ -262,6 +294,10 @@ impl PyBuoyancyBatch {
     #[getter]
     fn partially_submerged(&self, py: Python<'_>) -> Py<PyArray1<i64>> {
         self.partially_submerged.clone_ref(py)
+    }
+    #[getter]
+    fn wetted_area(&self, py: Python<'_>) -> Py<PyArray1<f64>> {
+        self.wetted_area.clone_ref(py)
     }
     #[getter]
     fn method(&self) -> &'static str {
