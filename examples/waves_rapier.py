@@ -420,7 +420,7 @@ def plot(
         "Floating on waves in rapier3d (buoyancy.rapier): heave and pitch against the surface at each body\n"
         + "    ".join(s.title for s in sea_list)
         + f"\nthe bodies settle in still water; the waves, travelling along +x, grow over the first {RAMP:g} s; "
-        f"figures over {stats_from:g}–{seconds:g} s",
+        f"figures over {stats_from:.3g}–{seconds:g} s",
         fontsize=11,
     )
     for column, sea in enumerate(sea_list):
@@ -510,6 +510,10 @@ def main() -> None:
     parser.add_argument("--seconds", type=float, default=SECONDS, help=f"seconds of waves (default {SECONDS:g})")
     parser.add_argument("--out", type=pathlib.Path, default=REPO / "out" / "waves_rapier.png", help="the PNG to write")
     args = parser.parse_args()
+    if not (math.isfinite(args.seconds) and args.seconds > RAMP):
+        parser.error(f"--seconds: must be more than the waves' ramp, {RAMP:g} s; got {args.seconds:g}")
+    # The statistics over the last two thirds of the waves at most (from 20 s of 60 on).
+    stats_from = min(STATS_FROM, args.seconds / 3)
     started = time.perf_counter()
     speed, spin, drift, turn = rest_check()
     at_rest = speed < REST_SPEED and spin < REST_SPIN and drift < REST_DRIFT and turn < REST_TURN
@@ -525,9 +529,9 @@ def main() -> None:
         print(f"{sea.name}: {sea.title}")
     print(
         f"{len(runs) // len(sea_list)} bodies, {SETTLE:g} s of still water then {args.seconds:g} s of waves "
-        f"(ramped in over {RAMP:g} s), rapier at 60 Hz; statistics from {STATS_FROM:g} s on\n"
+        f"(ramped in over {RAMP:g} s), rapier at 60 Hz; statistics from {stats_from:.3g} s on\n"
     )
-    print(table(runs))
+    print(table(runs, stats_from))
     print(
         "\nheave / η: on the regular wave, the amplitudes of the heave and of the elevation at the body at the wave's\n"
         "   frequency (least squares), and the heave's lag; on the JONSWAP sea, their standard deviations.\n"
@@ -536,7 +540,7 @@ def main() -> None:
         f"bounded: every pose finite, |heave| ≤ {HEAVE_BOUND_HEIGHTS:g} wave heights (H = 2a, or Hs), "
         f"speed ≤ {SPEED_BOUND:g} m/s, spin ≤ {SPIN_BOUND:g} rad/s.\n"
     )
-    plot(runs, sea_list, args.out, args.seconds)
+    plot(runs, sea_list, args.out, args.seconds, stats_from)
     print(f"wrote {args.out}")
     print(f"finished in {time.perf_counter() - started:.1f} s")
 
