@@ -46,10 +46,12 @@ __all__ = [
     "FloatReport",
     "GerstnerWaves",
     "HeightGrid",
+    "Hydrostatics",
     "Mesh",
     "MeshDefect",
     "MeshError",
     "Water",
+    "Waterplane",
     "Waves",
     "cube",
     "load",
@@ -474,6 +476,37 @@ class Mesh:
         coefficients: DampingCoefficients | None = None,
         about: npt.ArrayLike | None = None,
     ) -> Damping: ...
+    def waterplane(
+        self,
+        position: npt.ArrayLike | None = (0, 0, 0),
+        rotation: npt.ArrayLike | None = None,
+        water: Water | None = None,
+    ) -> Waterplane:
+        """The section of the still water plane through the body at a pose, world frame."""
+    def hydrostatics(
+        self,
+        center_of_gravity: npt.ArrayLike,
+        position: npt.ArrayLike | None = (0, 0, 0),
+        rotation: npt.ArrayLike | None = None,
+        water: Water | None = None,
+        mass: float | None = None,
+        reference_point: npt.ArrayLike | None = None,
+        longitudinal_axis: npt.ArrayLike | None = (1, 0, 0),
+        keel: npt.ArrayLike | None = None,
+    ) -> Hydrostatics:
+        """KB, KG, BM, GM and the heave-roll-pitch stiffness at a pose; points in the mesh frame."""
+    def stiffness(
+        self,
+        center_of_gravity: npt.ArrayLike,
+        position: npt.ArrayLike | None = (0, 0, 0),
+        rotation: npt.ArrayLike | None = None,
+        water: Water | None = None,
+        mass: float | None = None,
+        reference_point: npt.ArrayLike | None = None,
+        longitudinal_axis: npt.ArrayLike | None = (1, 0, 0),
+        keel: npt.ArrayLike | None = None,
+    ) -> _FloatArray:
+        """Shape (3, 3): heave, roll, pitch; ``hydrostatics(...).stiffness``."""
     def transformed(self, matrix: npt.ArrayLike) -> Mesh:
         """A copy mapped by the affine 4×4 ``matrix`` (mesh frame)."""
     def scaled(self, factor: float | npt.ArrayLike) -> Mesh:
@@ -483,6 +516,67 @@ class Mesh:
     def __eq__(self, other: object, /) -> bool: ...
     def __hash__(self) -> int: ...
     def __reduce__(self) -> tuple[type[Mesh], tuple[_FloatArray, _IntArray]]: ...
+
+@final
+class Waterplane:
+    """The section of the still water plane through a body, world frame, SI units."""
+
+    @property
+    def area(self) -> float:
+        """m²."""
+    @property
+    def center_of_flotation(self) -> _FloatArray:
+        """Shape (3,), m."""
+    @property
+    def axes(self) -> _FloatArray:
+        """Shape (2, 3): ``e1`` (the longitudinal axis on the plane), ``e2``."""
+    @property
+    def second_moments(self) -> _FloatArray:
+        """Shape (2, 2), m⁴, about the center of flotation in the basis ``axes``."""
+    @property
+    def principal_moments(self) -> _FloatArray:
+        """Shape (2,), m⁴, least first."""
+    @property
+    def principal_axes(self) -> _FloatArray:
+        """Shape (2, 3)."""
+
+@final
+class Hydrostatics:
+    """Hydrostatics of a body at a pose, world frame, SI units."""
+
+    @property
+    def waterplane(self) -> Waterplane: ...
+    @property
+    def displaced_volume(self) -> float: ...
+    @property
+    def center_of_buoyancy(self) -> _FloatArray: ...
+    @property
+    def center_of_gravity(self) -> _FloatArray: ...
+    @property
+    def keel(self) -> _FloatArray: ...
+    @property
+    def reference_point(self) -> _FloatArray: ...
+    @property
+    def mass(self) -> float: ...
+    @property
+    def kb(self) -> float: ...
+    @property
+    def kg(self) -> float: ...
+    @property
+    def bm_transverse(self) -> float: ...
+    @property
+    def bm_longitudinal(self) -> float: ...
+    @property
+    def gm_transverse(self) -> float: ...
+    @property
+    def gm_longitudinal(self) -> float: ...
+    @property
+    def bm_principal(self) -> _FloatArray: ...
+    @property
+    def gm_principal(self) -> _FloatArray: ...
+    @property
+    def stiffness(self) -> _FloatArray:
+        """Shape (3, 3): heave, roll, pitch, about ``reference_point``."""
 
 @final
 class FloatReport:

@@ -57,7 +57,8 @@ pub fn to_py(e: Error, argument: Option<&str>) -> PyErr {
     match e {
         Error::InvalidShape { parameter, reason }
         | Error::InvalidWater { parameter, reason }
-        | Error::InvalidDamping { parameter, reason } => return arg_error(parameter, reason),
+        | Error::InvalidDamping { parameter, reason }
+        | Error::InvalidLoading { parameter, reason } => return arg_error(parameter, reason),
         _ => {}
     }
     let message = match argument {

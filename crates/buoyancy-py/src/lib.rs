@@ -21,6 +21,7 @@ mod float_report;
 mod format;
 mod gerstner;
 mod height_grid;
+mod hydrostatics;
 mod io;
 mod mesh;
 mod pressure;
@@ -53,6 +54,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<defects::PyMeshDefect>()?;
     m.add_class::<controller::PyController>()?;
     m.add_class::<float_report::PyFloatReport>()?;
+    m.add_class::<hydrostatics::PyWaterplane>()?;
+    m.add_class::<hydrostatics::PyHydrostatics>()?;
     let mesh_error = py.get_type::<errors::MeshError>();
     defects::set_defaults(&mesh_error)?;
     m.add("MeshError", mesh_error)?;

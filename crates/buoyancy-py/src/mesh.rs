@@ -18,6 +18,7 @@ use crate::damping::{PyDamping, PyDampingCoefficients};
 use crate::detach::detach_if_large;
 use crate::errors::{MeshError, arg_error, to_py, type_error};
 use crate::format::{g, g3};
+use crate::hydrostatics::{self, PyHydrostatics, PyWaterplane};
 use crate::result::{PyBuoyancy, PyBuoyancyBatch, Row};
 use crate::threads;
 use crate::water::PyWater;
@@ -686,6 +687,151 @@ impl PyMesh {
         let offset = convert::vector3(offset, "offset")?;
         let m = Matrix4::new_translation(&offset);
         self.mapped(py, &m, "offset", move |mesh| mesh.translated(&offset))
+    }
+
+    /// The waterplane at a pose: the section of the still water plane through the body, its
+    /// area, center of flotation and second moments (exact for the mesh: the polygons where the
+    /// plane cuts it, holes included).
+    ///
+    /// Parameters
+    /// ----------
+    /// position, rotation :
+    ///     The pose, as in :meth:`buoyancy`.
+    /// water : Water, optional
+    ///     Still water (a ``Water`` with waves is a ``ValueError``); default ``Water()``.
+    ///
+    /// Returns
+    /// -------
+    /// Waterplane
+    ///     World frame; its ``axes[0]`` is the mesh's x axis projected on the plane (its z axis
+    ///     when x is within 30° of the vertical).
+    ///
+    /// Examples
+    /// --------
+    /// >>> ring = buoyancy.shapes.torus(1.0, 0.25, 64, 32)   # about y, the up axis
+    /// >>> round(ring.waterplane().area / (np.pi * (1.25**2 - 0.75**2)), 3)   # an annulus
+    /// 0.998
+    #[pyo3(
+        signature = (position=None, rotation=None, water=None),
+        text_signature = "(self, position=(0, 0, 0), rotation=None, water=None)"
+    )]
+    fn waterplane(
+        &self,
+        py: Python<'_>,
+        position: Option<&Bound<'_, PyAny>>,
+        rotation: Option<&Bound<'_, PyAny>>,
+        water: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyWaterplane> {
+        let (water, waves) = PyMesh::water(water)?;
+        hydrostatics::still_water(waves)?;
+        let pose = PyMesh::pose(position, rotation)?;
+        hydrostatics::waterplane(py, self, &pose, &water)
+    }
+
+    /// The hydrostatics at a pose: the waterplane, ``KB``, ``KG``, the metacentric radii and
+    /// heights about both waterplane axes, and the hydrostatic stiffness in heave, roll and
+    /// pitch.
+    ///
+    /// Parameters
+    /// ----------
+    /// center_of_gravity : array_like, shape (3,)
+    ///     ``G``, mesh frame, m.
+    /// position, rotation :
+    ///     The pose, as in :meth:`buoyancy`.
+    /// water : Water, optional
+    ///     Still water (waves are a ``ValueError``); default ``Water()``.
+    /// mass : float, optional
+    ///     Kg, positive; default the mass of the water displaced at this pose (the body floats
+    ///     freely there).
+    /// reference_point : array_like, shape (3,), optional
+    ///     The point the stiffness is taken about, mesh frame; default ``G``.
+    /// longitudinal_axis : array_like, shape (3,), optional
+    ///     The body's fore-and-aft axis, mesh frame, default ``(1, 0, 0)``: roll is about it.
+    /// keel : array_like, shape (3,), optional
+    ///     The point heights (``KB``, ``KG``) are measured from, mesh frame; default the lowest
+    ///     vertex at this pose.
+    ///
+    /// Returns
+    /// -------
+    /// Hydrostatics
+    ///
+    /// Examples
+    /// --------
+    /// A box 4 m long (x), 1 m deep (y, up), 2 m wide, floating at half its depth:
+    ///
+    /// >>> box = buoyancy.shapes.cube().scaled((4.0, 1.0, 2.0))
+    /// >>> h = box.hydrostatics(center_of_gravity=(0, 0, 0))
+    /// >>> round(h.bm_transverse, 12) == round(2.0**2 / (12 * 0.5), 12)
+    /// True
+    #[pyo3(
+        signature = (center_of_gravity, position=None, rotation=None, water=None, mass=None, reference_point=None, longitudinal_axis=None, keel=None),
+        text_signature = "(self, center_of_gravity, position=(0, 0, 0), rotation=None, water=None, mass=None, reference_point=None, longitudinal_axis=(1, 0, 0), keel=None)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn hydrostatics(
+        &self,
+        py: Python<'_>,
+        center_of_gravity: &Bound<'_, PyAny>,
+        position: Option<&Bound<'_, PyAny>>,
+        rotation: Option<&Bound<'_, PyAny>>,
+        water: Option<&Bound<'_, PyAny>>,
+        mass: Option<&Bound<'_, PyAny>>,
+        reference_point: Option<&Bound<'_, PyAny>>,
+        longitudinal_axis: Option<&Bound<'_, PyAny>>,
+        keel: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyHydrostatics> {
+        let (water, waves) = PyMesh::water(water)?;
+        hydrostatics::still_water(waves)?;
+        let pose = PyMesh::pose(position, rotation)?;
+        let loading = hydrostatics::loading(
+            center_of_gravity,
+            mass,
+            reference_point,
+            longitudinal_axis,
+            keel,
+        )?;
+        hydrostatics::hydrostatics(py, self, &pose, &water, &loading)
+    }
+
+    /// The hydrostatic stiffness at a pose, shape (3, 3): ``hydrostatics(...).stiffness``,
+    /// rows and columns heave, roll, pitch (N/m, N/rad, N·m/m, N·m/rad), about
+    /// ``reference_point`` (default ``G``). Arguments as in :meth:`hydrostatics`.
+    ///
+    /// Examples
+    /// --------
+    /// >>> box = buoyancy.shapes.cube().scaled((4.0, 1.0, 2.0))
+    /// >>> c = box.stiffness(center_of_gravity=(0, 0, 0))
+    /// >>> round(float(c[0, 0]) / (1000 * 9.81 * 8.0), 12)   # rho g A_wp
+    /// 1.0
+    #[pyo3(
+        signature = (center_of_gravity, position=None, rotation=None, water=None, mass=None, reference_point=None, longitudinal_axis=None, keel=None),
+        text_signature = "(self, center_of_gravity, position=(0, 0, 0), rotation=None, water=None, mass=None, reference_point=None, longitudinal_axis=(1, 0, 0), keel=None)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn stiffness<'py>(
+        &self,
+        py: Python<'py>,
+        center_of_gravity: &Bound<'_, PyAny>,
+        position: Option<&Bound<'_, PyAny>>,
+        rotation: Option<&Bound<'_, PyAny>>,
+        water: Option<&Bound<'_, PyAny>>,
+        mass: Option<&Bound<'_, PyAny>>,
+        reference_point: Option<&Bound<'_, PyAny>>,
+        longitudinal_axis: Option<&Bound<'_, PyAny>>,
+        keel: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let h = self.hydrostatics(
+            py,
+            center_of_gravity,
+            position,
+            rotation,
+            water,
+            mass,
+            reference_point,
+            longitudinal_axis,
+            keel,
+        )?;
+        Ok(h.stiffness_array(py))
     }
 
     fn __repr__(&self) -> String {
