@@ -3,6 +3,7 @@ use alloc::vec::Vec;
 use nalgebra::{Matrix4, Point3, Vector3};
 
 use crate::hierarchy::Hierarchy;
+use crate::hydrostatics::Opening;
 use crate::node_sums::{NodeSums, TriangleTerms};
 use crate::surface_moments::SurfaceMoments;
 use crate::validation;
@@ -21,6 +22,10 @@ use crate::{Error, Real};
 /// * **accepts** zero-area triangles (coincident vertices with distinct indices) and unused
 ///   vertices;
 /// * **rejects** everything else with a typed [`Error`] naming the vertex, triangle or edge.
+///
+/// A hull surface with planar openings (a hull without a deck) is closed by flat lids with
+/// [`Mesh::close_openings`], which remembers them ([`Mesh::openings`]) so that
+/// [`Mesh::check_openings`] can tell whether the water reaches one at a pose.
 ///
 /// It precomputes, in `f64` whatever `T` is, the volume, the centroid, the vertices relative to
 /// the centroid, the per-triangle volume elements the [`Fast`](crate::Method::Fast) method
@@ -54,7 +59,7 @@ pub struct Mesh<T: Real> {
     /// together in memory.
     pub(crate) vertices: Vec<Vector3<T>>,
     /// For each input vertex, its position in `vertices`.
-    vertex_slots: Vec<u32>,
+    pub(crate) vertex_slots: Vec<u32>,
     /// Outward-oriented triangles (counter-clockwise seen from outside), in the input order.
     pub(crate) triangles: Vec<[u32; 3]>,
     /// The same triangles in the hierarchy's leaf order, so that a leaf's triangles and their
@@ -93,6 +98,8 @@ pub struct Mesh<T: Real> {
     /// Per vertex (in `vertices`' order), the coefficients of the pressure integrals linear in
     /// its height, for the parts under water of a non-flat surface.
     pub(crate) vertex_terms: Vec<VertexTerms<T>>,
+    /// The openings closed by lids ([`Mesh::close_openings`]); empty for a closed input.
+    pub(crate) openings: Vec<Opening>,
     reoriented: bool,
 }
 
@@ -179,6 +186,7 @@ impl<T: Real> Mesh<T> {
             surface_area: T::from_f64_lossy(surface_area),
             hierarchy,
             node_sums,
+            openings: Vec::new(),
             reoriented,
         })
     }
@@ -218,7 +226,11 @@ impl<T: Real> Mesh<T> {
         let vertices = (0..self.vertex_count())
             .map(|i| matrix.transform_point(&self.vertex(i)))
             .collect();
-        Mesh::new(vertices, self.triangles.clone())
+        // The same vertex and triangle numbers: the lids and their rims carry over (an
+        // affine map keeps them planar).
+        let mut mesh = Mesh::new(vertices, self.triangles.clone())?;
+        mesh.openings = self.openings.clone();
+        Ok(mesh)
     }
 
     /// This mesh scaled by `factors` along the axes of the mesh frame, about its origin; see
