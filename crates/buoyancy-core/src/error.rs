@@ -25,6 +25,40 @@ pub enum Error {
         /// What is wrong with it.
         reason: &'static str,
     },
+    /// The mass of an equilibrium or righting-arm computation
+    /// ([`Mesh::equilibrium`](crate::Mesh::equilibrium)) is missing, zero or not finite.
+    InvalidMass {
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// The body is too heavy to float: its mass is at least the mass of the water its whole
+    /// volume displaces ([`Mesh::equilibrium`](crate::Mesh::equilibrium)).
+    TooHeavyToFloat {
+        /// The mass given, kg.
+        mass: f64,
+        /// `ρ·V`, the mass of water the whole body displaces, kg: the largest mass that floats
+        /// (at it, the body hangs fully submerged at any depth).
+        capacity: f64,
+    },
+    /// The equilibrium solver did not reach its tolerance
+    /// ([`Mesh::equilibrium`](crate::Mesh::equilibrium)).
+    NoConvergence {
+        /// Newton iterations taken.
+        iterations: usize,
+        /// The largest relative residual left: force/(m·g) or moment/(m·g·L).
+        residual: f64,
+        /// The tolerance it had to reach.
+        tolerance: f64,
+    },
+    /// An option of the equilibrium or righting-arm solver is out of range
+    /// ([`EquilibriumOptions`](crate::hydrostatics::EquilibriumOptions),
+    /// [`Mesh::gz_curve`](crate::Mesh::gz_curve)).
+    InvalidSolverOption {
+        /// The option's name: `tolerance`, `max_iterations`, `heels` or `trim`.
+        parameter: &'static str,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
     /// More vertices than a `u32` index can address.
     TooManyVertices {
         /// Number of vertices given.
@@ -121,60 +155,6 @@ pub enum Error {
         /// What is wrong.
         message: String,
     },
-    /// A draft given to [`Mesh::hydrostatic_table`](crate::Mesh::hydrostatic_table) is NaN,
-    /// infinite, negative or above the body's height.
-    InvalidDraft {
-        /// Its zero-based position in the list of drafts.
-        index: usize,
-        /// The draft given, m.
-        draft: f64,
-        /// The body's height along the up normal at the table's orientation (highest vertex
-        /// minus lowest), m: the largest draft accepted.
-        height: f64,
-        /// What is wrong with it.
-        reason: &'static str,
-    },
-    /// An option of a hydrostatic table is out of range
-    /// ([`TableOptions`](crate::hydrostatics::TableOptions)).
-    InvalidTableOption {
-        /// The option's name: `rotation`, `longitudinal_axis`, `center_of_gravity` or `length`.
-        parameter: &'static str,
-        /// What is wrong with it.
-        reason: &'static str,
-    },
-    /// An opening of a hull given to [`Mesh::close_openings`](crate::Mesh::close_openings) (a
-    /// loop of open edges) is not planar within the tolerance, so no flat lid closes it.
-    NonPlanarOpening {
-        /// The opening's number (see [`Opening`](crate::hydrostatics::Opening)).
-        opening: usize,
-        /// The vertex of its rim farthest from the rim's mean plane (zero-based input index).
-        vertex: u32,
-        /// That vertex's distance from the plane, m.
-        deviation: f64,
-        /// The largest distance accepted: the relative tolerance times the rim's radius, m.
-        tolerance: f64,
-    },
-    /// An opening of a hull given to [`Mesh::close_openings`](crate::Mesh::close_openings)
-    /// cannot be closed by a lid: its rim encloses no area, or two rims meet at a vertex.
-    InvalidOpening {
-        /// The opening's number (see [`Opening`](crate::hydrostatics::Opening)).
-        opening: usize,
-        /// A vertex of its rim (zero-based input index): the one where rims meet, if they do.
-        vertex: u32,
-        /// What is wrong with it.
-        reason: &'static str,
-    },
-    /// Water reaches an opening of the hull, closed by a lid when the mesh was built
-    /// ([`Mesh::close_openings`](crate::Mesh::close_openings)), at the pose queried: the
-    /// results would count the lid as hull while the water flows in.
-    OpeningSubmerged {
-        /// The opening's number (see [`Opening`](crate::hydrostatics::Opening)).
-        opening: usize,
-        /// The lowest vertex of its rim (zero-based input index).
-        vertex: u32,
-        /// That vertex's height above the surface, m (zero or negative).
-        height: f64,
-    },
 }
 
 impl fmt::Display for Error {
@@ -184,6 +164,27 @@ impl fmt::Display for Error {
             Error::EmptyBody => write!(f, "a floating body needs at least one mesh"),
             Error::InvalidLoading { parameter, reason } => {
                 write!(f, "invalid loading condition {parameter}: {reason}")
+            }
+            Error::InvalidMass { reason } => write!(f, "invalid mass: {reason}"),
+            Error::TooHeavyToFloat { mass, capacity } => write!(
+                f,
+                "the body does not float: its mass, {mass:.6e} kg, is at least the mass of \
+                 water its whole volume displaces, {capacity:.6e} kg; lighten it, or check the \
+                 mesh's units and the water's density"
+            ),
+            Error::NoConvergence {
+                iterations,
+                residual,
+                tolerance,
+            } => write!(
+                f,
+                "the equilibrium solver did not converge: after {iterations} iterations the \
+                 relative residual is {residual:.3e}, above the tolerance {tolerance:.3e}; \
+                 raise max_iterations or the tolerance, or give a start pose nearer the \
+                 equilibrium"
+            ),
+            Error::InvalidSolverOption { parameter, reason } => {
+                write!(f, "invalid solver option {parameter}: {reason}")
             }
             Error::TooManyVertices { count } => write!(
                 f,
@@ -232,50 +233,6 @@ impl fmt::Display for Error {
                     write!(f, "cannot parse the mesh, line {line}: {message}")
                 }
             }
-            Error::InvalidDraft {
-                index,
-                draft,
-                height,
-                reason,
-            } => write!(
-                f,
-                "invalid draft {index} ({draft} m): {reason} (drafts run from 0 to the body's \
-                 height, {height} m)"
-            ),
-            Error::InvalidTableOption { parameter, reason } => {
-                write!(f, "invalid hydrostatic table option {parameter}: {reason}")
-            }
-            Error::NonPlanarOpening {
-                opening,
-                vertex,
-                deviation,
-                tolerance,
-            } => write!(
-                f,
-                "opening {opening} of the hull is not planar: vertex {vertex} of its rim lies \
-                 {deviation:.3e} m from the rim's mean plane, more than {tolerance:.3e} m; only a \
-                 planar opening is closed by a flat lid (close this one in the mesh)"
-            ),
-            Error::InvalidOpening {
-                opening,
-                vertex,
-                reason,
-            } => write!(
-                f,
-                "opening {opening} of the hull (at vertex {vertex}) cannot be closed by a lid: \
-                 {reason}"
-            ),
-            Error::OpeningSubmerged {
-                opening,
-                vertex,
-                height,
-            } => write!(
-                f,
-                "water reaches opening {opening} of the hull at this pose: vertex {vertex} of its \
-                 rim is {:.3e} m below the surface; the lid closing it is not hull, the water \
-                 would flow in",
-                -height
-            ),
         }
     }
 }

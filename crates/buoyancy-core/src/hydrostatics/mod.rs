@@ -107,65 +107,120 @@
 //! # Ok::<(), buoyancy_core::Error>(())
 //! ```
 //!
-//! # Hydrostatic table
-//! [`Mesh::hydrostatic_table`](crate::Mesh::hydrostatic_table) evaluates the hydrostatics of
-//! the body at one upright orientation ([`TableOptions`], the identity by default) over a list
-//! of drafts `T`, the depth of the keel (the lowest vertex along `n`) below the still level: one
-//! [`HydrostaticRow`] per draft with `V`, `ρV`, `KB`, `BM_T`, `BM_L`, `KM_T = KB + BM_T`,
-//! `KM_L = KB + BM_L`, the waterplane area `A_wp` and
+//! # Equilibrium
+//! [`Mesh::equilibrium`](crate::Mesh::equilibrium) finds the pose at rest of a body of mass `m`
+//! and center of gravity `G` (a [`LoadingCondition`] with a mass): the [`Equilibrium`], where
+//! the displacement equals the mass, `ρV = m`, and the center of buoyancy `B` lies on the
+//! earth's vertical through `G`.
+//!
+//! ## Frame and angles
+//! `n` is the water's up normal. The start pose ([`EquilibriumOptions::start`], the identity by
+//! default) gives the *upright* orientation `R₀`, the yaw, and the vertical through `G` on
+//! which `G` stays. `e₁` is the body's longitudinal axis
+//! ([`LoadingCondition::longitudinal_axis`], mesh x by default) under `R₀`, projected on the
+//! still plane and normalised; `e₂ = n × e₁`. The pose at heel `φ`, trim `θ` (radians) with `G`
+//! at height `z` above the surface is, world frame,
 //!
 //! ```text
-//! LCB = e₁·(B − O),   LCF = e₁·(F − O),   TPC = ρ·A_wp·0.01/1000 (t/cm),
-//! MCT = ρ·V·GM_L/(100·L) (kg·m/cm),
+//! R = Rot(e₂, θ)·Rot(e₁, φ)·R₀,    G_w = G_h + (level + z)·n,    x_world = R·(x_mesh − G) + G_w
 //! ```
 //!
-//! `O` the mesh origin (projected on the still plane), `L` the waterline length (the extent of
-//! the waterplane along `e₁`) unless a length is given, `GM_L = KB + BM_L − KG` with a center of
-//! gravity given, else `BM_L` (`KG ≈ KB`). Every figure comes from
-//! [`Mesh::hydrostatics`](crate::Mesh::hydrostatics) at the row's pose.
+//! `Rot(a, α)` the right-handed rotation by `α` about the unit axis `a`, `G_h` the horizontal
+//! part of `G` at the start pose. Heel is thus the rotation about the body's longitudinal axis
+//! (which trim tilts: intrinsically, trim first, then heel about the body axis), trim the
+//! rotation about the horizontal transverse axis `e₂`. Signs, right-hand rule: a **positive
+//! heel** lifts the `+e₂` side and puts the `−e₂` side down; a **positive trim** puts the head
+//! of the longitudinal axis (the `+e₁` end) down. For a ship modelled x forward, y to port,
+//! z up (`n = z`, `e₂ = y`): positive heel is starboard down, positive trim bow down. Modelled
+//! x forward and y up (the default [`Water`]), `e₂ = −z`: positive heel puts the `+z` side down.
+//!
+//! ## Method
+//! The potential of weight and buoyancy, heights above the surface, `V` and `B` exact at the
+//! pose ([`Method::Exact`]):
+//!
+//! ```text
+//! U = m·g·z_G − ρ·g·V·z_B,    ∂U/∂z = m·g − ρ·g·V,    ∂U/∂α_a = −M_G·a
+//! ```
+//!
+//! for a rotation `α_a` about a horizontal axis `a` through `G`, `M_G` the moment of buoyancy
+//! about `G`: its gradient is the residual (heave force and tilting moments), its Hessian the
+//! stiffness `C` about `G` ([`Hydrostatics::stiffness`]). An equilibrium is stable when `C` is
+//! positive definite. At each attitude `(φ, θ)` the draft is solved first (Newton on `z` with
+//! `dV/dz = −A_wp`, safeguarded by bisection between fully submerged and dry), which leaves the
+//! reduced potential `Ũ(φ, θ)` with gradient `(−M_G·a₁, −M_G·e₂)`, `a₁ = cos θ·e₁ − sin θ·n`
+//! the heel axis, and Hessian the Schur complement `C_rr − C_rz·C_zz⁻¹·C_zr` of heave (in
+//! `cos θ·φ` and `θ`). Newton steps on it use the eigenvalues' magnitudes (a descent direction
+//! where the curvature is negative too), at most 0.5 rad, with a backtracking line search that
+//! accepts a step lowering `Ũ` (Armijo) or the moment residual. A state converged with a
+//! negative eigenvalue of the reduced Hessian (below `−√tolerance`) is unstable: the solver
+//! restarts from a step along its eigenvector that lowers `Ũ`. An upright box with `GM < 0`
+//! heels to its angle of loll, `tan φ = √(−2·GM/BM)` while wall-sided; a square log of
+//! relative density between `(3 − √3)/6` and `(3 + √3)/6` tilts, corner down in the middle of
+//! the range.
+//!
+//! The residuals are relative: `(ρV − m)/m` and `M_G·e₁/(m·g·L)`, `M_G·e₂/(m·g·L)` with
+//! `L = 2·`[`Mesh::bounding_radius`](crate::Mesh::bounding_radius); the default tolerance is
+//! `ε^(2/3)`. A body with `m ≥ ρ·V_total` is [`Error::TooHeavyToFloat`](crate::Error), a
+//! solve that does not reach the tolerance [`Error::NoConvergence`](crate::Error), never a
+//! silent return.
+//!
+//! # The righting-arm curve
+//! [`Mesh::gz_curve`](crate::Mesh::gz_curve) imposes heels `φ_k` (same frame and signs), solves
+//! the draft (`ρV = m`) and, with [`Trim::Free`], the trim at each (Newton on `Ũ` in `θ`,
+//! continued from the previous heel), or holds it ([`Trim::Fixed`]), and measures
+//!
+//! ```text
+//! GZ = −(B − G)·e₂,    M_G·a₁ = −m·g·GZ·cos θ,    dŨ/dφ = m·g·GZ·cos θ
+//! ```
+//!
+//! the horizontal lever between the verticals through `B` and `G`, perpendicular to the heel
+//! axis, positive when righting a positive heel. Hence `∫ GZ cos θ dφ = ΔU/(m·g)` (the dynamic
+//! stability; `θ = 0` for a body symmetric fore and aft) and `dGZ/dφ = GM_T` at an upright
+//! equilibrium. [`GzCurve`] gives the area under the curve (trapezoidal rule, m·rad), the angle
+//! of maximum GZ (the greatest point refined by a parabola) and the angle of vanishing stability
+//! (linear interpolation of the first root past the positive part).
 //!
 //! ```
-//! use buoyancy_core::hydrostatics::TableOptions;
+//! use buoyancy_core::hydrostatics::{EquilibriumOptions, LoadingCondition, Trim};
 //! use buoyancy_core::{Mesh, Water, shape};
-//! use nalgebra::Vector3;
+//! use nalgebra::{Point3, Vector3};
 //!
-//! // A box 4 m long (x), 1 m deep (y, up), 2 m wide (z).
-//! let (v, t) = shape::cube::<f64>(1)?;
+//! // A box 4 m long (x), 1 m deep (y, up), 2 m wide (z) of 4000 kg: draft 0.5 m in fresh
+//! // water; G 0.25 m above the keel and 2 cm towards +z.
+//! let (v, t) = shape::cube::<f64>(2)?;
 //! let hull = Mesh::new(v, t)?.scaled(&Vector3::new(4.0, 1.0, 2.0))?;
 //! let water = Water::default();
-//! let rows = hull.hydrostatic_table(&water, &[0.25, 0.5, 0.75], &TableOptions::new())?;
-//! for row in &rows {
-//!     let t = row.draft;
-//!     assert!((row.displacement - 1000.0 * 8.0 * t).abs() < 1e-9);
-//!     assert!((row.kb - t / 2.0).abs() < 1e-12);
-//!     assert!((row.bm_transverse - 4.0 / (12.0 * t)).abs() < 1e-12);
-//!     assert!((row.tpc - 1000.0 * 8.0 / 1e5).abs() < 1e-15); // 0.08 t/cm
-//!     assert!(row.lcb.abs() < 1e-12 && row.lcf.abs() < 1e-12);
-//!     assert!((row.waterline_length - 4.0).abs() < 1e-12);
+//! let loading = LoadingCondition::new(Point3::new(0.0, -0.25, 0.02))?.with_mass(4000.0)?;
+//! let rest = hull.equilibrium(&water, &loading)?;
+//!
+//! // Wall-sided: tan φ·(GM + ½·BM·tan²φ) = 0.02 with KB = 0.25, BM = B²/12T, KG = 0.25.
+//! let (gm, bm) = (0.25 + 4.0 / 6.0 - 0.25, 4.0 / 6.0);
+//! let tan = rest.heel.tan();
+//! assert!((tan * (gm + 0.5 * bm * tan * tan) - 0.02).abs() < 1e-10);
+//! assert!(rest.heel > 0.0 && rest.trim.abs() < 1e-10 && rest.stable); // +z side down
+//! assert!(rest.residual.amax() < 1e-10);
+//!
+//! // The GZ curve of the same box with G on the centerline: sin φ·(GM + ½·BM·tan²φ).
+//! let upright = LoadingCondition::new(Point3::new(0.0, -0.25, 0.0))?.with_mass(4000.0)?;
+//! let heels: Vec<f64> = (0..=8).map(|k| 0.05 * k as f64).collect();
+//! let curve = hull.gz_curve(&water, &upright, &heels, Trim::Free, &EquilibriumOptions::default())?;
+//! for p in &curve.points {
+//!     let exact = p.heel.sin() * (gm + 0.5 * bm * p.heel.tan().powi(2));
+//!     assert!((p.gz - exact).abs() < 1e-12);
 //! }
-//! // A draft beyond the body's depth is an error naming it.
-//! let e = hull.hydrostatic_table(&water, &[0.5, 1.5], &TableOptions::new()).unwrap_err();
-//! assert!(matches!(e, buoyancy_core::Error::InvalidDraft { index: 1, .. }));
+//! assert!(curve.area() > 0.0 && curve.vanishing_angle().is_none());
 //! # Ok::<(), buoyancy_core::Error>(())
 //! ```
-//!
-//! # Open hulls
-//! A hull surface without a deck is closed by flat lids when the mesh is built,
-//! [`Mesh::close_openings`](crate::Mesh::close_openings): each planar loop of open edges gets a
-//! fan of triangles, the mesh remembers them ([`Opening`]), and
-//! [`Mesh::check_openings`](crate::Mesh::check_openings) and the hydrostatic table return
-//! [`Error::OpeningSubmerged`](crate::Error::OpeningSubmerged) the moment the water reaches a
-//! rim. While the rims are dry, every result is that of the open hull.
 
+mod equilibrium;
 mod keel;
-mod openings;
+mod righting_arm;
 mod stability;
-mod table;
 mod waterplane;
 
-pub use openings::Opening;
+pub use equilibrium::{Equilibrium, EquilibriumOptions};
+pub use righting_arm::{GzCurve, GzPoint, Trim};
 pub use stability::{Hydrostatics, LoadingCondition};
-pub use table::{HydrostaticRow, TableOptions};
 pub use waterplane::Waterplane;
 
 #[cfg(doc)]
