@@ -155,6 +155,60 @@ pub enum Error {
         /// What is wrong.
         message: String,
     },
+    /// A draft given to [`Mesh::hydrostatic_table`](crate::Mesh::hydrostatic_table) is NaN,
+    /// infinite, negative or above the body's height.
+    InvalidDraft {
+        /// Its zero-based position in the list of drafts.
+        index: usize,
+        /// The draft given, m.
+        draft: f64,
+        /// The body's height along the up normal at the table's orientation (highest vertex
+        /// minus lowest), m: the largest draft accepted.
+        height: f64,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// An option of a hydrostatic table is out of range
+    /// ([`TableOptions`](crate::hydrostatics::TableOptions)).
+    InvalidTableOption {
+        /// The option's name: `rotation`, `longitudinal_axis`, `center_of_gravity` or `length`.
+        parameter: &'static str,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// An opening of a hull given to [`Mesh::close_openings`](crate::Mesh::close_openings) (a
+    /// loop of open edges) is not planar within the tolerance, so no flat lid closes it.
+    NonPlanarOpening {
+        /// The opening's number (see [`Opening`](crate::hydrostatics::Opening)).
+        opening: usize,
+        /// The vertex of its rim farthest from the rim's mean plane (zero-based input index).
+        vertex: u32,
+        /// That vertex's distance from the plane, m.
+        deviation: f64,
+        /// The largest distance accepted: the relative tolerance times the rim's radius, m.
+        tolerance: f64,
+    },
+    /// An opening of a hull given to [`Mesh::close_openings`](crate::Mesh::close_openings)
+    /// cannot be closed by a lid: its rim encloses no area, or two rims meet at a vertex.
+    InvalidOpening {
+        /// The opening's number (see [`Opening`](crate::hydrostatics::Opening)).
+        opening: usize,
+        /// A vertex of its rim (zero-based input index): the one where rims meet, if they do.
+        vertex: u32,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// Water reaches an opening of the hull, closed by a lid when the mesh was built
+    /// ([`Mesh::close_openings`](crate::Mesh::close_openings)), at the pose queried: the
+    /// results would count the lid as hull while the water flows in.
+    OpeningSubmerged {
+        /// The opening's number (see [`Opening`](crate::hydrostatics::Opening)).
+        opening: usize,
+        /// The lowest vertex of its rim (zero-based input index).
+        vertex: u32,
+        /// That vertex's height above the surface, m (zero or negative).
+        height: f64,
+    },
 }
 
 impl fmt::Display for Error {
@@ -233,6 +287,50 @@ impl fmt::Display for Error {
                     write!(f, "cannot parse the mesh, line {line}: {message}")
                 }
             }
+            Error::InvalidDraft {
+                index,
+                draft,
+                height,
+                reason,
+            } => write!(
+                f,
+                "invalid draft {index} ({draft} m): {reason} (drafts run from 0 to the body's \
+                 height, {height} m)"
+            ),
+            Error::InvalidTableOption { parameter, reason } => {
+                write!(f, "invalid hydrostatic table option {parameter}: {reason}")
+            }
+            Error::NonPlanarOpening {
+                opening,
+                vertex,
+                deviation,
+                tolerance,
+            } => write!(
+                f,
+                "opening {opening} of the hull is not planar: vertex {vertex} of its rim lies \
+                 {deviation:.3e} m from the rim's mean plane, more than {tolerance:.3e} m; only a \
+                 planar opening is closed by a flat lid (close this one in the mesh)"
+            ),
+            Error::InvalidOpening {
+                opening,
+                vertex,
+                reason,
+            } => write!(
+                f,
+                "opening {opening} of the hull (at vertex {vertex}) cannot be closed by a lid: \
+                 {reason}"
+            ),
+            Error::OpeningSubmerged {
+                opening,
+                vertex,
+                height,
+            } => write!(
+                f,
+                "water reaches opening {opening} of the hull at this pose: vertex {vertex} of its \
+                 rim is {:.3e} m below the surface; the lid closing it is not hull, the water \
+                 would flow in",
+                -height
+            ),
         }
     }
 }

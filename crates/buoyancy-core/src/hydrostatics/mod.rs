@@ -107,6 +107,56 @@
 //! # Ok::<(), buoyancy_core::Error>(())
 //! ```
 //!
+//! # Hydrostatic table
+//! [`Mesh::hydrostatic_table`](crate::Mesh::hydrostatic_table) evaluates the hydrostatics of
+//! the body at one upright orientation ([`TableOptions`], the identity by default) over a list
+//! of drafts `T`, the depth of the keel (the lowest vertex along `n`) below the still level: one
+//! [`HydrostaticRow`] per draft with `V`, `ρV`, `KB`, `BM_T`, `BM_L`, `KM_T = KB + BM_T`,
+//! `KM_L = KB + BM_L`, the waterplane area `A_wp` and
+//!
+//! ```text
+//! LCB = e₁·(B − O),   LCF = e₁·(F − O),   TPC = ρ·A_wp·0.01/1000 (t/cm),
+//! MCT = ρ·V·GM_L/(100·L) (kg·m/cm),
+//! ```
+//!
+//! `O` the mesh origin (projected on the still plane), `L` the waterline length (the extent of
+//! the waterplane along `e₁`) unless a length is given, `GM_L = KB + BM_L − KG` with a center of
+//! gravity given, else `BM_L` (`KG ≈ KB`). Every figure comes from
+//! [`Mesh::hydrostatics`](crate::Mesh::hydrostatics) at the row's pose.
+//!
+//! ```
+//! use buoyancy_core::hydrostatics::TableOptions;
+//! use buoyancy_core::{Mesh, Water, shape};
+//! use nalgebra::Vector3;
+//!
+//! // A box 4 m long (x), 1 m deep (y, up), 2 m wide (z).
+//! let (v, t) = shape::cube::<f64>(1)?;
+//! let hull = Mesh::new(v, t)?.scaled(&Vector3::new(4.0, 1.0, 2.0))?;
+//! let water = Water::default();
+//! let rows = hull.hydrostatic_table(&water, &[0.25, 0.5, 0.75], &TableOptions::new())?;
+//! for row in &rows {
+//!     let t = row.draft;
+//!     assert!((row.displacement - 1000.0 * 8.0 * t).abs() < 1e-9);
+//!     assert!((row.kb - t / 2.0).abs() < 1e-12);
+//!     assert!((row.bm_transverse - 4.0 / (12.0 * t)).abs() < 1e-12);
+//!     assert!((row.tpc - 1000.0 * 8.0 / 1e5).abs() < 1e-15); // 0.08 t/cm
+//!     assert!(row.lcb.abs() < 1e-12 && row.lcf.abs() < 1e-12);
+//!     assert!((row.waterline_length - 4.0).abs() < 1e-12);
+//! }
+//! // A draft beyond the body's depth is an error naming it.
+//! let e = hull.hydrostatic_table(&water, &[0.5, 1.5], &TableOptions::new()).unwrap_err();
+//! assert!(matches!(e, buoyancy_core::Error::InvalidDraft { index: 1, .. }));
+//! # Ok::<(), buoyancy_core::Error>(())
+//! ```
+//!
+//! # Open hulls
+//! A hull surface without a deck is closed by flat lids when the mesh is built,
+//! [`Mesh::close_openings`](crate::Mesh::close_openings): each planar loop of open edges gets a
+//! fan of triangles, the mesh remembers them ([`Opening`]), and
+//! [`Mesh::check_openings`](crate::Mesh::check_openings) and the hydrostatic table return
+//! [`Error::OpeningSubmerged`](crate::Error::OpeningSubmerged) the moment the water reaches a
+//! rim. While the rims are dry, every result is that of the open hull.
+//!
 //! # Equilibrium
 //! [`Mesh::equilibrium`](crate::Mesh::equilibrium) finds the pose at rest of a body of mass `m`
 //! and center of gravity `G` (a [`LoadingCondition`] with a mass): the [`Equilibrium`], where
@@ -214,13 +264,17 @@
 
 mod equilibrium;
 mod keel;
+mod openings;
 mod righting_arm;
 mod stability;
+mod table;
 mod waterplane;
 
 pub use equilibrium::{Equilibrium, EquilibriumOptions};
+pub use openings::Opening;
 pub use righting_arm::{GzCurve, GzPoint, Trim};
 pub use stability::{Hydrostatics, LoadingCondition};
+pub use table::{HydrostaticRow, TableOptions};
 pub use waterplane::Waterplane;
 
 #[cfg(doc)]
