@@ -141,6 +141,75 @@ fn box_heel_from_a_transverse_offset_of_g() {
 }
 
 #[test]
+fn box_trim_from_a_longitudinal_offset_of_g() {
+    // The same wall-sided relation in pitch, about e₂ with the length for the beam:
+    // tan θ·(GM_L + ½·BM_L·tan²θ) = x_G (positive trim puts the +x end down).
+    let hull = test_box();
+    let water = Water::default();
+    let (t, kg) = (0.6, 0.7);
+    let (length, d) = (BOX.0, BOX.1);
+    let bm = length * length / (12.0 * t);
+    let gm = t / 2.0 + bm - kg;
+    let mut worst: f64 = 0.0;
+    for offset in [0.05, -0.2] {
+        let g = Point3::new(offset, kg - d / 2.0, 0.0);
+        let e = hull.equilibrium(&water, &loading(g, box_mass(t))).unwrap();
+        let tan = root(|x| x * (gm + 0.5 * bm * x * x) - offset, -1.0, 1.0);
+        assert!(tan.abs() < (2.0 * t / length).min(2.0 * (d - t) / length));
+        let error = (e.trim - tan.atan()).abs() / tan.atan().abs();
+        worst = worst.max(error);
+        assert!(
+            error < 1e-8,
+            "offset {offset}: trim {} against {}",
+            e.trim,
+            tan.atan()
+        );
+        assert!(e.trim * offset > 0.0 && e.heel.abs() < 1e-10 && e.stable);
+    }
+    eprintln!("box trim from an offset G: worst relative error {worst:.1e}");
+}
+
+#[test]
+fn start_pose_keeps_yaw_and_the_vertical_through_g() {
+    // z up, surface at z = 0.3, a box 4 (x) × 2 (y) × 1.5 (z, up); the start pose yawed by
+    // 0.7 rad about z and far from the origin. The heel from a transverse offset is that of
+    // the y-up box: in this frame e₂ = n × e₁ = y, so G towards −y heels positively.
+    let (v, t) = shape::cube::<f64>(3).unwrap();
+    let hull = Mesh::new(v, t)
+        .unwrap()
+        .scaled(&Vector3::new(BOX.0, BOX.2, BOX.1))
+        .unwrap();
+    let water = Water::new(1000.0, 9.81, Vector3::z(), 0.3).unwrap();
+    let g = Point3::new(0.0, -0.05, 0.7 - BOX.1 / 2.0);
+    let start = Pose::from_parts(
+        Translation3::new(120.0, -40.0, 7.0),
+        UnitQuaternion::from_scaled_axis(Vector3::z() * 0.7),
+    );
+    let options = EquilibriumOptions::default().with_start(start);
+    let e = hull
+        .equilibrium_with(&water, &loading(g, box_mass(0.6)), &options)
+        .unwrap();
+    let reference = test_box()
+        .equilibrium(&Water::default(), &loading(box_g(0.7, 0.05), box_mass(0.6)))
+        .unwrap();
+    let g_start = start * g;
+    let g_rest = e.pose * g;
+    let errors = [
+        (e.heel - reference.heel).abs(),
+        e.trim.abs(),
+        (e.draft - reference.draft).abs(),
+        (g_rest.x - g_start.x).abs() + (g_rest.y - g_start.y).abs(),
+    ];
+    // Yaw kept: the longitudinal axis still points along the start's, seen from above.
+    let axis = e.pose.rotation * Vector3::x();
+    let yaw = axis.y.atan2(axis.x);
+    eprintln!("start pose: {errors:?}, yaw {yaw}");
+    assert!(errors.iter().all(|x| *x < 1e-9), "{errors:?}");
+    assert!((yaw - 0.7).abs() < 1e-12);
+    assert!(e.heel > 0.0);
+}
+
+#[test]
 fn angle_of_loll_when_gm_is_negative() {
     let hull = test_box();
     let water = Water::default();
