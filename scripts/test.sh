@@ -21,9 +21,11 @@ rm -rf .venv-test
 "$PYTHON" -m venv .venv-test
 VPY=.venv-test/bin/python
 "$VPY" -m pip install --quiet --upgrade pip
-# trimesh for Mesh.from_trimesh's tests; mypy (its stubtest) and ruff for the checks after pytest
-# (ruff within one minor version, whose formatting style is fixed).
-"$VPY" -m pip install --quiet numpy pytest matplotlib trimesh 'mypy>=2.4' 'ruff~=0.17.6'
+# trimesh for Mesh.from_trimesh's tests; Dask for examples/dask_sweep.py's; mypy (its stubtest)
+# and ruff for the checks after pytest (ruff within one minor version, whose formatting style is
+# fixed).
+"$VPY" -m pip install --quiet numpy pytest matplotlib trimesh 'mypy>=2.4' 'ruff~=0.17.6' \
+  'dask[distributed]>=2024.1'
 # rapier's Python binding, for buoyancy.rapier (a prebuilt abi3 wheel); without it the rapier
 # tests skip, saying so.
 "$VPY" -m pip install --quiet 'rapier3d>=0.36.1' \

@@ -43,9 +43,12 @@ __all__ = [
     "Controller",
     "Damping",
     "DampingCoefficients",
+    "Equilibrium",
     "FloatReport",
     "GerstnerWaves",
+    "GzCurve",
     "HeightGrid",
+    "HydrostaticTable",
     "Hydrostatics",
     "Mesh",
     "MeshDefect",
@@ -507,6 +510,45 @@ class Mesh:
         keel: npt.ArrayLike | None = None,
     ) -> _FloatArray:
         """Shape (3, 3): heave, roll, pitch; ``hydrostatics(...).stiffness``."""
+    def equilibrium(
+        self,
+        mass: float,
+        center_of_mass: npt.ArrayLike,
+        water: Water | None = None,
+        rotation: npt.ArrayLike | None = None,
+        position: npt.ArrayLike | None = None,
+        axis: npt.ArrayLike | None = (1, 0, 0),
+        keel: npt.ArrayLike | None = None,
+        tolerance: float | None = None,
+        max_iterations: int | None = 100,
+    ) -> Equilibrium:
+        """The stable pose at rest for a mass (kg) and center of mass (mesh frame, m)."""
+    def gz_curve(
+        self,
+        mass: float,
+        center_of_mass: npt.ArrayLike,
+        heel_deg: npt.ArrayLike,
+        axis: npt.ArrayLike | None = (1, 0, 0),
+        free_trim: bool = True,
+        trim_deg: float | None = None,
+        water: Water | None = None,
+        rotation: npt.ArrayLike | None = None,
+        position: npt.ArrayLike | None = None,
+        keel: npt.ArrayLike | None = None,
+        tolerance: float | None = None,
+        max_iterations: int | None = 100,
+    ) -> GzCurve:
+        """The righting-arm curve over heels in degrees, draft (and trim) solved at each."""
+    def hydrostatic_table(
+        self,
+        drafts: npt.ArrayLike,
+        water: Water | None = None,
+        rotation: npt.ArrayLike | None = None,
+        longitudinal_axis: npt.ArrayLike | None = (1, 0, 0),
+        center_of_gravity: npt.ArrayLike | None = None,
+        length: float | None = None,
+    ) -> HydrostaticTable:
+        """The body upright at each draft (m): one row a draft."""
     def transformed(self, matrix: npt.ArrayLike) -> Mesh:
         """A copy mapped by the affine 4×4 ``matrix`` (mesh frame)."""
     def scaled(self, factor: float | npt.ArrayLike) -> Mesh:
@@ -577,6 +619,116 @@ class Hydrostatics:
     @property
     def stiffness(self) -> _FloatArray:
         """Shape (3, 3): heave, roll, pitch, about ``reference_point``."""
+
+@final
+class Equilibrium:
+    """A floating body at rest, world frame, SI units, angles in degrees."""
+
+    @property
+    def position(self) -> _FloatArray:
+        """Shape (3,), m."""
+    @property
+    def rotation(self) -> _FloatArray:
+        """Shape (4,), quaternion ``(x, y, z, w)``."""
+    @property
+    def draft(self) -> float: ...
+    @property
+    def heel(self) -> float:
+        """Degrees, right-handed about the longitudinal axis."""
+    @property
+    def trim(self) -> float:
+        """Degrees, positive puts the head of the longitudinal axis down."""
+    @property
+    def residual(self) -> _FloatArray: ...
+    @property
+    def length(self) -> float: ...
+    @property
+    def iterations(self) -> int: ...
+    @property
+    def restarts(self) -> int: ...
+    @property
+    def stable(self) -> bool: ...
+    @property
+    def stiffness_eigenvalues(self) -> _FloatArray: ...
+    @property
+    def hydrostatics(self) -> Hydrostatics: ...
+
+@final
+class GzCurve:
+    """A righting-arm curve, SI units, angles in degrees."""
+
+    @property
+    def heel(self) -> _FloatArray: ...
+    @property
+    def trim(self) -> _FloatArray: ...
+    @property
+    def gz(self) -> _FloatArray:
+        """Shape (K,), m; positive is righting at positive heel."""
+    @property
+    def draft(self) -> _FloatArray: ...
+    @property
+    def positions(self) -> _FloatArray: ...
+    @property
+    def rotations(self) -> _FloatArray: ...
+    @property
+    def residuals(self) -> _FloatArray: ...
+    @property
+    def iterations(self) -> int: ...
+    @property
+    def area(self) -> float:
+        """m·rad."""
+    def area_up_to(self, heel_deg: float) -> float:
+        """m·rad, from the first heel to ``heel_deg``."""
+    @property
+    def max_gz(self) -> float: ...
+    @property
+    def angle_of_max_gz(self) -> float: ...
+    @property
+    def angle_of_vanishing_stability(self) -> float | None: ...
+    def __len__(self) -> int: ...
+
+@final
+class HydrostaticTable:
+    """A hydrostatic table: one row a draft, each column an array of shape (K,)."""
+
+    @property
+    def columns(self) -> list[str]: ...
+    @property
+    def units(self) -> list[str]: ...
+    def as_dict(self) -> dict[str, _FloatArray]: ...
+    @property
+    def draft(self) -> _FloatArray: ...
+    @property
+    def displaced_volume(self) -> _FloatArray: ...
+    @property
+    def displacement(self) -> _FloatArray: ...
+    @property
+    def kb(self) -> _FloatArray: ...
+    @property
+    def bm_transverse(self) -> _FloatArray: ...
+    @property
+    def bm_longitudinal(self) -> _FloatArray: ...
+    @property
+    def km_transverse(self) -> _FloatArray: ...
+    @property
+    def km_longitudinal(self) -> _FloatArray: ...
+    @property
+    def lcb(self) -> _FloatArray: ...
+    @property
+    def lcf(self) -> _FloatArray: ...
+    @property
+    def waterplane_area(self) -> _FloatArray: ...
+    @property
+    def waterline_length(self) -> _FloatArray: ...
+    @property
+    def tpc(self) -> _FloatArray: ...
+    @property
+    def gm_longitudinal(self) -> _FloatArray: ...
+    @property
+    def trim_length(self) -> _FloatArray: ...
+    @property
+    def mct(self) -> _FloatArray: ...
+    def __len__(self) -> int: ...
 
 @final
 class FloatReport:

@@ -292,6 +292,12 @@ impl PyHydrostatics {
     }
 }
 
+impl From<Hydrostatics<f64>> for PyHydrostatics {
+    fn from(inner: Hydrostatics<f64>) -> Self {
+        PyHydrostatics { inner }
+    }
+}
+
 impl PyHydrostatics {
     /// The stiffness matrix as an array.
     pub fn stiffness_array<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {

@@ -28,6 +28,7 @@ mod pressure;
 mod result;
 mod sea_state;
 mod shapes;
+mod stability;
 mod step_inputs;
 mod surface_function;
 mod threads;
@@ -56,6 +57,9 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<float_report::PyFloatReport>()?;
     m.add_class::<hydrostatics::PyWaterplane>()?;
     m.add_class::<hydrostatics::PyHydrostatics>()?;
+    m.add_class::<stability::PyEquilibrium>()?;
+    m.add_class::<stability::PyGzCurve>()?;
+    m.add_class::<stability::PyHydrostaticTable>()?;
     let mesh_error = py.get_type::<errors::MeshError>();
     defects::set_defaults(&mesh_error)?;
     m.add("MeshError", mesh_error)?;

@@ -20,6 +20,7 @@ use crate::errors::{MeshError, arg_error, to_py, type_error};
 use crate::format::{g, g3};
 use crate::hydrostatics::{self, PyHydrostatics, PyWaterplane};
 use crate::result::{PyBuoyancy, PyBuoyancyBatch, Row};
+use crate::stability::{self, PyEquilibrium, PyGzCurve, PyHydrostaticTable};
 use crate::threads;
 use crate::water::PyWater;
 use crate::water_waves::{Failure, WaterWaves, method_and_traversal};
@@ -175,7 +176,7 @@ impl PyMesh {
         Ok(PyMesh::new(inner, vertices))
     }
 
-    fn pose(
+    pub(crate) fn pose(
         position: Option<&Bound<'_, PyAny>>,
         rotation: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Pose<f64>> {
@@ -191,7 +192,7 @@ impl PyMesh {
     }
 
     /// The `water` argument, default `Water()`: its still plane, and its waves.
-    fn water<'a>(
+    pub(crate) fn water<'a>(
         water: Option<&'a Bound<'_, PyAny>>,
     ) -> PyResult<(buoyancy_core::Water<f64>, Option<&'a WaterWaves>)> {
         Ok(match convert::instance::<PyWater>(water, "water")? {
@@ -832,6 +833,196 @@ impl PyMesh {
             keel,
         )?;
         Ok(h.stiffness_array(py))
+    }
+
+    /// The stable pose at rest for a mass and center of mass: the draft, heel and trim where
+    /// the water displaced weighs what the body weighs and the center of buoyancy lies on the
+    /// vertical through the center of mass (Newton on the potential energy, with restarts from
+    /// unstable states: a box whose upright is unstable comes to rest heeled at its angle of
+    /// loll, a square log of middling density corner-down).
+    ///
+    /// Parameters
+    /// ----------
+    /// mass : float
+    ///     Kg, positive, less than the water the whole mesh displaces (else a ``ValueError``:
+    ///     the body does not float).
+    /// center_of_mass : array_like, shape (3,)
+    ///     Mesh frame, m.
+    /// water : Water, optional
+    ///     Still water (waves are a ``ValueError``); default ``Water()``.
+    /// rotation : array_like, optional
+    ///     The upright orientation heel and trim are measured from (quaternion ``(x, y, z, w)``
+    ///     or matrix); default the mesh frame's own. Its yaw is kept.
+    /// position : array_like, shape (3,), optional
+    ///     Start position: the horizontal position of the center of mass is kept from it;
+    ///     default the mesh frame at the world origin.
+    /// axis : array_like, shape (3,), optional
+    ///     The body's longitudinal axis, mesh frame, default ``(1, 0, 0)``: heel is about it.
+    /// keel : array_like, shape (3,), optional
+    ///     The point the draft is measured to, mesh frame; default the lowest vertex.
+    /// tolerance : float, optional
+    ///     Relative tolerance on the residuals, in (0, 0.1); default about 3.7e-11.
+    /// max_iterations : int, optional
+    ///     Newton iterations allowed, default 100; ``RuntimeError`` when they do not reach the
+    ///     tolerance (never a silent return).
+    ///
+    /// Returns
+    /// -------
+    /// Equilibrium
+    ///
+    /// Examples
+    /// --------
+    /// A square log 1 m across (x along it), half as dense as the water: upright is unstable,
+    /// it floats corner-down, heeled 45°:
+    ///
+    /// >>> log = buoyancy.shapes.cube().scaled((3.0, 1.0, 1.0))
+    /// >>> rest = log.equilibrium(mass=1500.0, center_of_mass=(0, 0, 0))
+    /// >>> round(abs(rest.heel), 6), rest.stable
+    /// (45.0, True)
+    #[pyo3(
+        signature = (mass, center_of_mass, water=None, rotation=None, position=None, axis=None, keel=None, tolerance=None, max_iterations=None),
+        text_signature = "(self, mass, center_of_mass, water=None, rotation=None, position=None, axis=(1, 0, 0), keel=None, tolerance=None, max_iterations=100)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn equilibrium(
+        &self,
+        py: Python<'_>,
+        mass: &Bound<'_, PyAny>,
+        center_of_mass: &Bound<'_, PyAny>,
+        water: Option<&Bound<'_, PyAny>>,
+        rotation: Option<&Bound<'_, PyAny>>,
+        position: Option<&Bound<'_, PyAny>>,
+        axis: Option<&Bound<'_, PyAny>>,
+        keel: Option<&Bound<'_, PyAny>>,
+        tolerance: Option<&Bound<'_, PyAny>>,
+        max_iterations: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyEquilibrium> {
+        let (water, waves) = PyMesh::water(water)?;
+        hydrostatics::still_water(waves)?;
+        let loading = stability::loading(mass, center_of_mass, axis, keel)?;
+        let options = stability::options(position, rotation, tolerance, max_iterations)?;
+        stability::equilibrium(py, self, &water, &loading, &options)
+    }
+
+    /// The righting-arm (GZ) curve: at each heel, the body is held at that heel about its
+    /// longitudinal axis, its draft solved so that it displaces its mass and its trim solved too
+    /// (by continuation from the heel before) or held, and ``GZ``, the lever between the
+    /// verticals through the centers of buoyancy and mass, is measured.
+    ///
+    /// Parameters
+    /// ----------
+    /// mass, center_of_mass :
+    ///     As in :meth:`equilibrium`.
+    /// heel_deg : array_like, shape (K,)
+    ///     Heel angles, degrees, strictly increasing, from the upright orientation (right-handed
+    ///     about ``axis``; see :class:`Equilibrium` for the side that goes down).
+    /// axis : array_like, shape (3,), optional
+    ///     The body's longitudinal axis, mesh frame, default ``(1, 0, 0)``.
+    /// free_trim : bool
+    ///     Solve the trim at each heel (default), or hold it at ``trim_deg`` (default 0).
+    /// trim_deg : float, optional
+    ///     The trim held with ``free_trim=False``, degrees.
+    /// water, rotation, position, keel, tolerance, max_iterations :
+    ///     As in :meth:`equilibrium`.
+    ///
+    /// Returns
+    /// -------
+    /// GzCurve
+    ///
+    /// Examples
+    /// --------
+    /// A box 4 m long, 1 m deep and 2 m wide, of 2 t (draft 0.25 m), its center of mass at its
+    /// center: wall-sided while the deck edge is dry and the bilge wet (below 14°),
+    /// ``GZ = sin φ (GM + BM tan² φ / 2)``.
+    ///
+    /// >>> box = buoyancy.shapes.cube().scaled((4.0, 1.0, 2.0))
+    /// >>> curve = box.gz_curve(2000.0, (0, 0, 0), heel_deg=[0, 4, 8, 12])
+    /// >>> kb, bm, kg = 0.125, 2.0**2 / (12 * 0.25), 0.5
+    /// >>> phi = np.radians(curve.heel)
+    /// >>> wall_sided = np.sin(phi) * (kb + bm - kg + bm * np.tan(phi) ** 2 / 2)
+    /// >>> bool(np.allclose(curve.gz, wall_sided, rtol=0, atol=1e-9))
+    /// True
+    #[pyo3(
+        signature = (mass, center_of_mass, heel_deg, axis=None, free_trim=true, trim_deg=None, water=None, rotation=None, position=None, keel=None, tolerance=None, max_iterations=None),
+        text_signature = "(self, mass, center_of_mass, heel_deg, axis=(1, 0, 0), free_trim=True, trim_deg=None, water=None, rotation=None, position=None, keel=None, tolerance=None, max_iterations=100)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn gz_curve(
+        &self,
+        py: Python<'_>,
+        mass: &Bound<'_, PyAny>,
+        center_of_mass: &Bound<'_, PyAny>,
+        heel_deg: &Bound<'_, PyAny>,
+        axis: Option<&Bound<'_, PyAny>>,
+        free_trim: bool,
+        trim_deg: Option<&Bound<'_, PyAny>>,
+        water: Option<&Bound<'_, PyAny>>,
+        rotation: Option<&Bound<'_, PyAny>>,
+        position: Option<&Bound<'_, PyAny>>,
+        keel: Option<&Bound<'_, PyAny>>,
+        tolerance: Option<&Bound<'_, PyAny>>,
+        max_iterations: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyGzCurve> {
+        let (water, waves) = PyMesh::water(water)?;
+        hydrostatics::still_water(waves)?;
+        let loading = stability::loading(mass, center_of_mass, axis, keel)?;
+        let options = stability::options(position, rotation, tolerance, max_iterations)?;
+        stability::gz_curve(
+            py, self, &water, &loading, heel_deg, free_trim, trim_deg, &options,
+        )
+    }
+
+    /// The hydrostatic table: the body upright at each draft (its keel, the lowest vertex, that
+    /// far below the still level), with its displacement, centers, metacentric radii, waterplane,
+    /// tonnes per centimetre and moment to change trim.
+    ///
+    /// Parameters
+    /// ----------
+    /// drafts : array_like, shape (K,)
+    ///     Drafts, m, each between 0 and the body's height.
+    /// water : Water, optional
+    ///     Still water; default ``Water()``.
+    /// rotation : array_like, optional
+    ///     The upright orientation, default the mesh frame's own.
+    /// longitudinal_axis : array_like, shape (3,), optional
+    ///     Mesh frame, default ``(1, 0, 0)``: ``lcb``, ``lcf`` are along it, ``bm_transverse``
+    ///     is about it.
+    /// center_of_gravity : array_like, shape (3,), optional
+    ///     Mesh frame: the moment to change trim takes ``GM_L = KB + BM_L - KG`` with it, else
+    ///     ``BM_L``.
+    /// length : float, optional
+    ///     The length of the moment to change trim, m; default the waterline length.
+    ///
+    /// Returns
+    /// -------
+    /// HydrostaticTable
+    ///
+    /// Examples
+    /// --------
+    /// >>> hull = buoyancy.shapes.wigley_hull()         # 4 m by 0.6 m, design draft 0.25 m
+    /// >>> table = hull.hydrostatic_table([0.1, 0.25])
+    /// >>> table.waterplane_area.round(2).tolist()      # 2/3 L B = 1.6 m² at the design draft
+    /// [1.02, 1.6]
+    #[pyo3(
+        signature = (drafts, water=None, rotation=None, longitudinal_axis=None, center_of_gravity=None, length=None),
+        text_signature = "(self, drafts, water=None, rotation=None, longitudinal_axis=(1, 0, 0), center_of_gravity=None, length=None)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn hydrostatic_table(
+        &self,
+        py: Python<'_>,
+        drafts: &Bound<'_, PyAny>,
+        water: Option<&Bound<'_, PyAny>>,
+        rotation: Option<&Bound<'_, PyAny>>,
+        longitudinal_axis: Option<&Bound<'_, PyAny>>,
+        center_of_gravity: Option<&Bound<'_, PyAny>>,
+        length: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyHydrostaticTable> {
+        let (water, waves) = PyMesh::water(water)?;
+        hydrostatics::still_water(waves)?;
+        let options =
+            stability::table_options(rotation, longitudinal_axis, center_of_gravity, length)?;
+        stability::hydrostatic_table(py, self, &water, drafts, &options)
     }
 
     fn __repr__(&self) -> String {

@@ -1,0 +1,113 @@
+"""``python -m buoyancy.stability`` on a box written to a file: what it prints against the box
+formulas, the files it writes, and its errors."""
+
+import csv
+import pathlib
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from buoyancy import shapes
+from buoyancy.stability import main
+
+RHO = 1025.0
+LENGTH, BEAM, DEPTH = 4.0, 2.0, 1.0
+
+
+def write_box(path: pathlib.Path) -> pathlib.Path:
+    """A box 4 m long (x), 2 m wide (y), 1 m deep (z, up), its bottom at z = 0, as OBJ."""
+    box = shapes.cube(2).scaled((LENGTH, BEAM, DEPTH)).translated((0, 0, DEPTH / 2))
+    lines = [f"v {x:.17g} {y:.17g} {z:.17g}" for x, y, z in box.vertices]
+    lines += [f"f {a + 1} {b + 1} {c + 1}" for a, b, c in box.faces]
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def read_csv(path: pathlib.Path) -> tuple[list[str], np.ndarray]:
+    with path.open() as f:
+        rows = list(csv.reader(f))
+    return rows[0], np.array(rows[1:], dtype=float)
+
+
+def test_box_equilibrium_table_and_gz_curve(tmp_path: pathlib.Path, capsys: pytest.CaptureFixture[str]) -> None:
+    draft, kg = 0.25, 0.4
+    mass = RHO * LENGTH * BEAM * draft
+    mesh = write_box(tmp_path / "box.obj")
+    out = tmp_path / "out"
+    code = main([str(mesh), "--mass", str(mass), "--cog", "0", "0", str(kg), "--up", "z", "--out", str(out)])
+    printed = capsys.readouterr().out
+    assert code == 0, printed
+    kb, bm_t, bm_l = draft / 2, BEAM**2 / (12 * draft), LENGTH**2 / (12 * draft)
+    values = {
+        line.split()[0]: line.split()[1] for line in printed.splitlines() if line.startswith("  ") and line.split()
+    }
+    assert float(values["draft"]) == pytest.approx(draft, abs=1e-4)
+    assert float(values["heel"]) == pytest.approx(0, abs=1e-3)
+    assert f"GM_T {kb + bm_t - kg:.4f} m" in printed
+    assert f"GM_L {kb + bm_l - kg:.4f} m" in printed
+    assert "stable:" in printed
+
+    header, gz = read_csv(out / "gz_curve.csv")
+    assert header == ["heel_deg", "gz_m", "trim_deg", "draft_m"]
+    heel = np.radians(gz[:, 0])
+    assert gz[0, 0] == 0 and gz[-1, 0] == 90
+    # Wall-sided while the bilge stays wet (tan φ < T / (B/2), below 14°).
+    wall = gz[:, 0] < 14
+    gm = kb + bm_t - kg
+    expected = np.sin(heel) * (gm + bm_t * np.tan(heel) ** 2 / 2)
+    np.testing.assert_allclose(gz[wall, 1], expected[wall], atol=1e-8)
+    np.testing.assert_allclose(gz[:, 2], 0, atol=1e-7)  # a symmetric box does not trim
+
+    header, table = read_csv(out / "hydrostatic_table.csv")
+    assert header[0] == "draft_m" and "displacement_kg" in header and "tpc_t/cm" in header
+    drafts = table[:, 0]
+    np.testing.assert_allclose(table[:, header.index("displacement_kg")], RHO * LENGTH * BEAM * drafts, rtol=1e-9)
+    np.testing.assert_allclose(table[:, header.index("kb_m")], drafts / 2, rtol=1e-9)
+    assert drafts[0] == pytest.approx(0.2 * draft) and drafts[-1] == pytest.approx(1.6 * draft)
+    if (out / "gz_curve.png").exists():
+        assert (out / "gz_curve.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_errors_exit_with_a_message(tmp_path: pathlib.Path, capsys: pytest.CaptureFixture[str]) -> None:
+    mesh = write_box(tmp_path / "box.obj")
+    too_heavy = RHO * LENGTH * BEAM * DEPTH * 1.01
+    assert main([str(mesh), "--mass", str(too_heavy), "--cog", "0", "0", "0.5", "--out", str(tmp_path)]) == 2
+    assert "does not float" in capsys.readouterr().err
+    assert main([str(tmp_path / "missing.stl"), "--mass", "1", "--cog", "0", "0", "0"]) == 2
+    assert "missing.stl" in capsys.readouterr().err
+    with pytest.raises(SystemExit):
+        main([str(mesh), "--mass", "1", "--cog", "0", "0", "0", "--up", "x", "--axis", "x"])
+    assert "longitudinal axis must be horizontal" in capsys.readouterr().err
+
+
+def test_runs_as_a_module(tmp_path: pathlib.Path) -> None:
+    mesh = write_box(tmp_path / "box.obj")
+    result = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "buoyancy.stability",
+            str(mesh),
+            "--mass",
+            "2050",
+            "--cog",
+            "0",
+            "0",
+            "0.4",
+            "--heel-max",
+            "30",
+            "--heel-step",
+            "10",
+            "--rows",
+            "3",
+            "--out",
+            str(tmp_path / "o"),
+        ],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert result.returncode == 0, result.stderr
+    assert "Hydrostatic table" in result.stdout and "GZ curve: 4 heels" in result.stdout
