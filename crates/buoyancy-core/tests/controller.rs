@@ -48,7 +48,7 @@ fn state(i: usize) -> BodyState {
 }
 
 fn parts(i: usize) -> Vec<Part> {
-    let mesh = if i % 2 == 0 { cube() } else { sphere() };
+    let mesh = if i.is_multiple_of(2) { cube() } else { sphere() };
     vec![Part {
         mesh,
         shape_to_body: Pose::identity(),
@@ -71,15 +71,15 @@ fn a_body_steps_as_it_would_alone() {
     fleet.step(&states, DT, &mut commands);
 
     let mut floating = 0;
-    for i in 0..FLEET {
+    for (i, (state, in_fleet)) in states.iter().zip(&commands).enumerate() {
         let mut alone = Controller::default();
         alone.add(parts(i), BodyOptions::default()).unwrap();
         let mut command = [Command::default()];
-        alone.step(&[states[i]], DT, &mut command);
-        alone.step(&[states[i]], DT, &mut command);
-        assert_eq!(commands[i], command[0], "body {i}");
+        alone.step(&[*state], DT, &mut command);
+        alone.step(&[*state], DT, &mut command);
+        assert_eq!(*in_fleet, command[0], "body {i}");
         assert_eq!(fleet.report(i), alone.report(0), "body {i}");
-        if commands[i].adds_anything() {
+        if in_fleet.adds_anything() {
             floating += 1;
         }
     }
@@ -94,11 +94,9 @@ fn the_order_of_the_bodies_does_not_matter() {
     let order: Vec<usize> = (0..FLEET).rev().collect();
     let mut forward = Controller::default();
     let mut backward = Controller::default();
-    for i in 0..FLEET {
+    for (i, &j) in order.iter().enumerate() {
         forward.add(parts(i), BodyOptions::default()).unwrap();
-        backward
-            .add(parts(order[i]), BodyOptions::default())
-            .unwrap();
+        backward.add(parts(j), BodyOptions::default()).unwrap();
     }
     let states: Vec<BodyState> = (0..FLEET).map(state).collect();
     let reversed: Vec<BodyState> = order.iter().map(|&i| states[i]).collect();
