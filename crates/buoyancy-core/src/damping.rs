@@ -47,12 +47,13 @@
 //! implicitly; the rapier adapter applies it semi-implicitly, `(W − α·dt·G)/(1 + α·dt)` with `α`
 //! the damping rate and `G` the step's other forces (see `buoyancy-rapier`).
 
-use nalgebra::{Point3, Vector3};
+use nalgebra::{Matrix3, Point3, Vector3};
 
 use crate::clip::clip_below;
 use crate::frame::Frame;
 use crate::hierarchy::Visit;
 use crate::mesh::TriangleNormal;
+use crate::reduced_mesh::ReducedMesh;
 use crate::{Error, Mesh, Pose, Real, Water};
 
 /// The coefficients of the damping model (see the [module documentation](self)), SI units.
@@ -349,6 +350,50 @@ impl<T: Real> Drag<T> {
     }
 }
 
+impl<T: Real> Drag<T> {
+    /// No triangle yet: the velocity of the centroid relative to the water (`linear_velocity`
+    /// minus the current) and `angular_velocity`, world frame, brought into the mesh frame by
+    /// the transpose of `rotation` (mesh → world).
+    fn new(
+        rotation: &Matrix3<T>,
+        linear_velocity: &Vector3<T>,
+        angular_velocity: &Vector3<T>,
+        water: &Water<T>,
+        coefficients: &DampingCoefficients<T>,
+    ) -> Self {
+        let rotation_t = rotation.transpose();
+        Drag {
+            velocity: rotation_t * (linear_velocity - coefficients.current),
+            omega: rotation_t * angular_velocity,
+            linear: coefficients.linear_drag,
+            quadratic: T::from_f64_lossy(0.5) * water.density() * coefficients.drag_coefficient,
+            force: Vector3::zeros(),
+            torque: Vector3::zeros(),
+            double_area: T::zero(),
+        }
+    }
+
+    /// Adds the triangle of corners `v` (relative to the centroid) at heights `h` above the
+    /// surface, of outward unit normal `normal` and twice the area `double_area`: nothing if it
+    /// is dry (a triangle lying in the surface, or touching it from above, is), all of it if
+    /// it is under water, else its parts under water.
+    #[inline(always)]
+    fn in_water(&mut self, v: [Vector3<T>; 3], h: [T; 3], normal: &Vector3<T>, double_area: T) {
+        let zero = T::zero();
+        if !(h[0] < zero || h[1] < zero || h[2] < zero) {
+            return;
+        }
+        if h[0] <= zero && h[1] <= zero && h[2] <= zero {
+            self.wetted(v, normal, double_area);
+        } else {
+            // The pieces lie in the triangle's plane: their area is along its normal.
+            clip_below(v, h, |p, _| {
+                self.wetted(p, normal, normal.dot(&(p[1] - p[0]).cross(&(p[2] - p[0]))))
+            });
+        }
+    }
+}
+
 impl<T: Real> Mesh<T> {
     /// The hydrodynamic damping of this mesh placed by `pose` (mesh → world) in `water`, moving
     /// with `linear_velocity` (of its center of mass, world frame, m/s) and `angular_velocity`
@@ -369,6 +414,80 @@ impl<T: Real> Mesh<T> {
         water: &Water<T>,
         coefficients: &DampingCoefficients<T>,
     ) -> Result<Damping<T>, Error> {
+        let motion = (linear_velocity, angular_velocity);
+        self.damping_over(
+            pose,
+            motion,
+            water,
+            coefficients,
+            T::one(),
+            |frame, drag| {
+                // The hierarchy skips the dry nodes and hands over the submerged ones whole, so only
+                // the triangles near the waterline are classified; the drag itself is not linear in
+                // the velocity over a node (only the part facing the flow counts), so every wetted
+                // triangle is still integrated.
+                self.hierarchy
+                    .walk(&frame.normal_local, frame.height, |visit| match visit {
+                        Visit::SubmergedNode { node, .. } => {
+                            for i in self.hierarchy.range(node) {
+                                let normal = &self.normals[i];
+                                drag.wetted(self.corners(i), &normal.unit, normal.double_area);
+                            }
+                        }
+                        Visit::CrossedLeaf { triangles } => {
+                            for i in triangles {
+                                let v = self.corners(i);
+                                let TriangleNormal { unit, double_area } = &self.normals[i];
+                                drag.in_water(v, frame.heights(&v), unit, *double_area);
+                            }
+                        }
+                    });
+            },
+        )
+    }
+
+    /// The damping of this mesh as [`Mesh::damping`] gives it, with the pressure drag
+    /// integrated over `reduced`, a coarse copy of this mesh's surface (see
+    /// [`ReducedMesh`]), built from this mesh: the same model and frame, the torque about this
+    /// mesh's centroid, every triangle of `reduced` examined (no hierarchy: it is small). The
+    /// wetted area is the reduced surface's times [`ReducedMesh::area_scale`], so that the
+    /// wetted fraction `f` and the angular damping are this mesh's up to the reduction. No
+    /// allocation.
+    ///
+    /// # Errors
+    /// As [`Mesh::damping`].
+    pub fn reduced_damping(
+        &self,
+        reduced: &ReducedMesh<T>,
+        pose: &Pose<T>,
+        linear_velocity: &Vector3<T>,
+        angular_velocity: &Vector3<T>,
+        water: &Water<T>,
+        coefficients: &DampingCoefficients<T>,
+    ) -> Result<Damping<T>, Error> {
+        let motion = (linear_velocity, angular_velocity);
+        let scale = reduced.area_scale();
+        self.damping_over(pose, motion, water, coefficients, scale, |frame, drag| {
+            for (i, normal) in reduced.normals.iter().enumerate() {
+                let v = reduced.corners(i);
+                drag.in_water(v, frame.heights(&v), &normal.unit, normal.double_area);
+            }
+        })
+    }
+
+    /// The damping with the pressure drag summed by `integrate` (given the water plane in the
+    /// mesh frame and the running sums) and the wetted area it finds multiplied by
+    /// `area_scale`: the checks, the early returns and the angular damping of
+    /// [`Mesh::damping`].
+    fn damping_over(
+        &self,
+        pose: &Pose<T>,
+        (linear_velocity, angular_velocity): (&Vector3<T>, &Vector3<T>),
+        water: &Water<T>,
+        coefficients: &DampingCoefficients<T>,
+        area_scale: T,
+        integrate: impl FnOnce(&Frame<T>, &mut Drag<T>),
+    ) -> Result<Damping<T>, Error> {
         let frame = Frame::new(self, pose, water)?;
         if !linear_velocity
             .iter()
@@ -382,61 +501,17 @@ impl<T: Real> Mesh<T> {
             return Ok(Damping::zero(frame.center_of_mass));
         }
         // Everything in the mesh frame, relative to the centroid.
-        let rotation_t = frame.rotation.transpose();
-        let velocity = rotation_t * (linear_velocity - coefficients.current);
-        let omega = rotation_t * angular_velocity;
-        let half = T::from_f64_lossy(0.5);
-        let zero = T::zero();
-        let mut drag = Drag {
-            velocity,
-            omega,
-            linear: coefficients.linear_drag,
-            quadratic: half * water.density() * coefficients.drag_coefficient,
-            force: Vector3::zeros(),
-            torque: Vector3::zeros(),
-            double_area: zero,
-        };
-        // The hierarchy skips the dry nodes and hands over the submerged ones whole, so only the
-        // triangles near the waterline are classified; the drag itself is not linear in the
-        // velocity over a node (only the part facing the flow counts), so every wetted triangle
-        // is still integrated.
-        self.hierarchy
-            .walk(&frame.normal_local, frame.height, |visit| match visit {
-                Visit::SubmergedNode { node, .. } => {
-                    for i in self.hierarchy.range(node) {
-                        let normal = &self.normals[i];
-                        drag.wetted(self.corners(i), &normal.unit, normal.double_area);
-                    }
-                }
-                Visit::CrossedLeaf { triangles } => {
-                    for i in triangles {
-                        let v = self.corners(i);
-                        let h = frame.heights(&v);
-                        // A triangle lying in the surface, or touching it from above, is dry.
-                        if !(h[0] < zero || h[1] < zero || h[2] < zero) {
-                            continue;
-                        }
-                        let TriangleNormal {
-                            unit: normal,
-                            double_area,
-                        } = &self.normals[i];
-                        if h[0] <= zero && h[1] <= zero && h[2] <= zero {
-                            drag.wetted(v, normal, *double_area);
-                        } else {
-                            // The pieces lie in the triangle's plane: their area is along its normal.
-                            clip_below(v, h, |p, _| {
-                                drag.wetted(
-                                    p,
-                                    normal,
-                                    normal.dot(&(p[1] - p[0]).cross(&(p[2] - p[0]))),
-                                )
-                            });
-                        }
-                    }
-                }
-            });
+        let mut drag = Drag::new(
+            &frame.rotation,
+            linear_velocity,
+            angular_velocity,
+            water,
+            coefficients,
+        );
+        integrate(&frame, &mut drag);
 
-        let wetted_area = drag.double_area * half;
+        let zero = T::zero();
+        let wetted_area = drag.double_area * T::from_f64_lossy(0.5) * area_scale;
         let wetted_fraction = if self.surface_area > zero {
             (wetted_area / self.surface_area).min(T::one())
         } else {

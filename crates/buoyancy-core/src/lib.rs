@@ -59,6 +59,7 @@ mod method;
 mod node_sums;
 mod query;
 mod real;
+pub mod reduced_mesh;
 mod reduction;
 pub mod shape;
 mod surface;

@@ -1,13 +1,17 @@
 //! One adapter step (buoyancy + damping for every body, forces applied) for 100 bunnies
-//! (the procedural torus knot when the shared meshes are absent), serially and, with the
-//! `rayon` feature, across threads:
+//! (the procedural torus knot when the shared meshes are absent), in still water and on an
+//! 8-component Airy sea (amplitudes 5 cm, wavelengths 3 to 14.9 m, eight directions),
+//! serially and, with the `rayon` feature, across threads:
 //!
 //! ```sh
 //! cargo bench -p buoyancy-rapier --bench step
 //! cargo bench -p buoyancy-rapier --bench step --features rayon
 //! ```
 
-use buoyancy_core::nalgebra::Point3;
+use std::sync::Arc;
+
+use buoyancy_core::nalgebra::{Point3, Vector3 as NVector3};
+use buoyancy_core::waves::{AiryComponent, AiryWaves};
 use buoyancy_core::{Mesh, shape};
 use buoyancy_rapier::{FloatOptions, FloatingBodies};
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -78,6 +82,25 @@ fn step(c: &mut Criterion) {
         mesh.triangle_count()
     );
     let dt = world.integration_parameters.dt;
+    c.bench_function(&id, |b| b.iter(|| water.apply(&mut world.bodies, dt)));
+    // The same bodies on a sea of 8 components, its time advancing with every step.
+    let sea = AiryWaves::new(
+        (0..8)
+            .map(|i| AiryComponent {
+                amplitude: 0.05,
+                wavelength: 3.0 + 1.7 * i as f64,
+                direction: NVector3::new((i as f64).cos(), 0.0, (i as f64).sin()),
+                phase: 0.7 * i as f64,
+            })
+            .collect(),
+        None,
+    )
+    .unwrap();
+    water.set_surface(Some(Arc::new(sea)));
+    let id = format!(
+        "adapter step on 8 Airy components, 100 × {name} ({} triangles), {mode}",
+        mesh.triangle_count()
+    );
     c.bench_function(&id, |b| b.iter(|| water.apply(&mut world.bodies, dt)));
 }
 

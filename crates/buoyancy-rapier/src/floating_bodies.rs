@@ -3,7 +3,8 @@
 use std::collections::HashMap;
 
 use buoyancy_core::controller::{
-    BodyOptions, BodyState, Command, Controller, FloatReport, Motion, Settings, SharedSurface,
+    BodyOptions, BodyState, Command, Controller, DampingResolution, FloatReport, Motion, Settings,
+    SharedSurface,
 };
 use buoyancy_core::nalgebra::Matrix3;
 use buoyancy_core::{DampingCoefficients, Mesh, Method, Pose, Water};
@@ -96,6 +97,18 @@ impl FloatingBodies {
         self.controller.settings_mut().damping = damping;
     }
 
+    /// How finely the pressure drag of the bodies without their own
+    /// [`FloatOptions::damping_resolution`] is integrated: by default over a reduced copy of
+    /// each mesh of more than 384 triangles, built once per mesh (see [`DampingResolution`]).
+    pub fn damping_resolution(&self) -> DampingResolution {
+        self.controller.damping_resolution()
+    }
+    /// Sets the damping resolution of the bodies without their own (their reduced meshes are
+    /// built, once per mesh, now), e.g. [`DampingResolution::Full`] for the model exactly.
+    pub fn set_damping_resolution(&mut self, resolution: DampingResolution) {
+        self.controller.set_damping_resolution(resolution);
+    }
+
     /// The moving free surface the bodies float on, if any (see the core's
     /// [controller](buoyancy_core::controller#waves)).
     pub fn surface(&self) -> Option<&SharedSurface> {
@@ -151,13 +164,18 @@ impl FloatingBodies {
             water: options.water,
             damping: options.damping,
         };
-        if let Some(&i) = self.index.get(&body) {
+        let i = if let Some(&i) = self.index.get(&body) {
             self.controller.replace(i, parts, overrides)?;
+            i
         } else {
             let i = self.controller.add(parts, overrides)?;
             self.index.insert(body, i);
             self.handles.push(body);
-        }
+            i
+        };
+        // The reduced meshes are shared: a mesh already reduced at this resolution is not again.
+        self.controller
+            .set_body_damping_resolution(i, options.damping_resolution);
         Ok(())
     }
 

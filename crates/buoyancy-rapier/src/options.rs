@@ -1,6 +1,7 @@
 //! How one body floats: which of its colliders, how finely round shapes are meshed, and the
 //! body's overrides of the world's settings.
 
+use buoyancy_core::controller::DampingResolution;
 use buoyancy_core::{DampingCoefficients, Method, Water};
 use rapier3d::prelude::ColliderHandle;
 
@@ -30,6 +31,9 @@ pub struct FloatOptions {
     /// This body's damping; `None`: the world's
     /// ([`FloatingBodies::damping`](crate::FloatingBodies::damping)).
     pub damping: Option<DampingCoefficients<f64>>,
+    /// How finely this body's pressure drag is integrated; `None`: the world's
+    /// ([`FloatingBodies::damping_resolution`](crate::FloatingBodies::damping_resolution)).
+    pub damping_resolution: Option<DampingResolution>,
 }
 
 impl Default for FloatOptions {
@@ -40,6 +44,7 @@ impl Default for FloatOptions {
             method: None,
             water: None,
             damping: None,
+            damping_resolution: None,
         }
     }
 }
@@ -68,6 +73,12 @@ impl FloatOptions {
     /// This body's damping ([`DampingCoefficients::off`] for none).
     pub fn damping(mut self, damping: DampingCoefficients<f64>) -> Self {
         self.damping = Some(damping);
+        self
+    }
+    /// How finely this body's pressure drag is integrated, e.g.
+    /// [`DampingResolution::Full`] for the model exactly.
+    pub fn damping_resolution(mut self, resolution: DampingResolution) -> Self {
+        self.damping_resolution = Some(resolution);
         self
     }
 }

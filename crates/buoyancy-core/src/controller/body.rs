@@ -4,8 +4,9 @@ use alloc::sync::Arc;
 use alloc::vec::Vec;
 
 use super::report::FloatReport;
-use super::settings::BodyOptions;
+use super::settings::{BodyOptions, DampingResolution};
 use super::share::AppliedShare;
+use crate::reduced_mesh::ReducedMesh;
 use crate::{Error, Mesh, Pose};
 
 /// One closed mesh of a body, placed on it: a shape's mesh in the shape's frame, and the pose
@@ -23,6 +24,12 @@ pub struct Part {
 pub(crate) struct FloatingBody {
     pub parts: Vec<Part>,
     pub options: BodyOptions,
+    /// This body's damping resolution, `None`: the controller's.
+    pub resolution_override: Option<DampingResolution>,
+    /// The resolution `reduced` was built with.
+    pub resolution: DampingResolution,
+    /// Per part, the reduced copy its pressure drag is integrated over, `None`: its own mesh.
+    pub reduced: Vec<Option<Arc<ReducedMesh<f64>>>>,
     /// Total volume (m³) and surface area (m²) of the parts, for the body's angular damping.
     pub volume: f64,
     pub surface_area: f64,
@@ -31,7 +38,8 @@ pub(crate) struct FloatingBody {
 }
 
 impl FloatingBody {
-    /// A body of `parts`, nothing applied yet.
+    /// A body of `parts`, nothing applied yet, its pressure drag integrated over the parts'
+    /// own meshes until the controller gives it reduced copies.
     ///
     /// # Errors
     /// [`Error::EmptyBody`] for no parts.
@@ -42,8 +50,11 @@ impl FloatingBody {
         let volume = parts.iter().map(|p| p.mesh.volume()).sum();
         let surface_area = parts.iter().map(|p| p.mesh.surface_area()).sum();
         Ok(FloatingBody {
+            reduced: alloc::vec![None; parts.len()],
             parts,
             options,
+            resolution_override: None,
+            resolution: DampingResolution::Full,
             volume,
             surface_area,
             share: AppliedShare::default(),

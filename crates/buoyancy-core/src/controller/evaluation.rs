@@ -117,7 +117,8 @@ pub(crate) fn evaluate(
 }
 
 /// The body's buoyancy and (explicit) damping: the sums over its parts, torques about the
-/// world center of mass, the pressure drag of each part and the angular damping of the whole
+/// world center of mass, the pressure drag of each part (over its reduced copy if it has one)
+/// and the angular damping of the whole
 /// body ([`angular_damping`] with the parts' total wetted fraction and volume). `None` when the
 /// core rejects a pose or velocity (not finite).
 fn sum_parts(
@@ -139,7 +140,7 @@ fn sum_parts(
         ..Default::default()
     };
     let mut weighted_center = Vector3::zeros();
-    for part in &body.parts {
+    for (part, reduced) in body.parts.iter().zip(&body.reduced) {
         let pose = state.pose * part.shape_to_body;
         let buoyancy = match sea {
             Some(sea) => part
@@ -150,10 +151,20 @@ fn sum_parts(
         .ok()?;
         // The core takes the velocity of the mesh's own centroid.
         let centroid_velocity = velocity + omega.cross(&(buoyancy.torque_point - center_of_mass));
-        let drag = part
-            .mesh
-            .damping(&pose, &centroid_velocity, &omega, water, damping)
-            .ok()?;
+        let drag = match reduced {
+            Some(reduced) => part.mesh.reduced_damping(
+                reduced,
+                &pose,
+                &centroid_velocity,
+                &omega,
+                water,
+                damping,
+            ),
+            None => part
+                .mesh
+                .damping(&pose, &centroid_velocity, &omega, water, damping),
+        }
+        .ok()?;
         report.submerged_volume += buoyancy.submerged_volume;
         weighted_center += buoyancy.center_of_buoyancy.coords * buoyancy.submerged_volume;
         report.buoyancy_force += buoyancy.force;
