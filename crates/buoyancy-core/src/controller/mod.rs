@@ -57,6 +57,17 @@
 //! the whole body's, with `V` the total volume of the parts and `f` their total wetted area
 //! over their total surface area, so that splitting a shape into parts does not change it.
 //!
+//! # Damping resolution
+//! The pressure drag is integrated over every wetted triangle, which for a mesh of thousands of
+//! triangles costs many times its buoyancy. By default ([`DampingResolution::DEFAULT`]) the
+//! controller integrates it over a reduced copy of each mesh of more than 384 triangles
+//! ([`ReducedMesh`](crate::reduced_mesh::ReducedMesh): vertex clustering, scaled to the mesh's
+//! volume), built once per mesh when a body is added and shared by the bodies of the same
+//! mesh; smaller meshes are taken whole, unchanged. [`Controller::set_damping_resolution`]
+//! and [`Controller::set_body_damping_resolution`] choose otherwise
+//! ([`DampingResolution::Full`] for the model exactly). The buoyancy always takes the full
+//! mesh.
+//!
 //! # Waves
 //! With a moving free surface ([`Controller::set_surface`], any [`WaterSurface`]), the buoyancy
 //! is the hydrostatic pressure of the waves integrated over each part's wetted surface
@@ -121,13 +132,14 @@ use alloc::vec::Vec;
 pub use body::Part;
 pub use report::{FloatReport, Outcome};
 pub use rest::Rest;
-pub use settings::{BodyOptions, Settings};
+pub use settings::{BodyOptions, DampingResolution, Settings};
 pub use state::{BodyState, Command, Motion};
 
 use body::FloatingBody;
 use evaluation::{Evaluation, Sea, evaluate};
 
 use crate::Error;
+use crate::reduced_mesh::ReducedMesh;
 use crate::waves::WaterSurface;
 
 /// A free surface shared with the controller (see [`Controller::set_surface`]): any
@@ -144,6 +156,8 @@ pub struct Controller {
     /// The moving free surface, if any, and its time.
     surface: Option<SharedSurface>,
     time: f64,
+    /// The damping resolution of the bodies without their own.
+    resolution: DampingResolution,
 }
 
 impl core::fmt::Debug for Controller {
@@ -153,6 +167,7 @@ impl core::fmt::Debug for Controller {
             .field("bodies", &self.bodies)
             .field("waves", &self.surface.is_some())
             .field("time", &self.time)
+            .field("resolution", &self.resolution)
             .finish()
     }
 }
@@ -165,6 +180,7 @@ impl Controller {
             bodies: Vec::new(),
             surface: None,
             time: 0.0,
+            resolution: DampingResolution::DEFAULT,
         }
     }
 
@@ -215,8 +231,93 @@ impl Controller {
     /// # Errors
     /// [`Error::EmptyBody`] for no parts.
     pub fn add(&mut self, parts: Vec<Part>, options: BodyOptions) -> Result<usize, Error> {
-        self.bodies.push(FloatingBody::new(parts, options)?);
+        let mut body = FloatingBody::new(parts, options)?;
+        self.reduce(&mut body, self.resolution);
+        self.bodies.push(body);
         Ok(self.bodies.len() - 1)
+    }
+
+    /// The damping resolution of the bodies without their own (see [`DampingResolution`]);
+    /// [`DampingResolution::DEFAULT`] unless set.
+    pub fn damping_resolution(&self) -> DampingResolution {
+        self.resolution
+    }
+
+    /// Sets the damping resolution of the bodies without their own, and builds the reduced
+    /// copies of their meshes it asks for (once per mesh).
+    pub fn set_damping_resolution(&mut self, resolution: DampingResolution) {
+        self.resolution = resolution;
+        for i in 0..self.bodies.len() {
+            if self.bodies[i].resolution_override.is_none() {
+                self.rebuild(i);
+            }
+        }
+    }
+
+    /// The damping resolution of body `index`: its own, else the controller's; `None` when
+    /// there is no such body.
+    pub fn body_damping_resolution(&self, index: usize) -> Option<DampingResolution> {
+        self.bodies.get(index).map(|b| b.resolution)
+    }
+
+    /// Gives body `index` its own damping resolution (`None`: the controller's), and builds
+    /// the reduced copies of its meshes it asks for. Returns `false` when there is no such
+    /// body.
+    pub fn set_body_damping_resolution(
+        &mut self,
+        index: usize,
+        resolution: Option<DampingResolution>,
+    ) -> bool {
+        let Some(body) = self.bodies.get_mut(index) else {
+            return false;
+        };
+        body.resolution_override = resolution;
+        self.rebuild(index);
+        true
+    }
+
+    /// Builds the reduced copies of body `index`'s meshes for its resolution.
+    fn rebuild(&mut self, index: usize) {
+        let resolution = self.bodies[index]
+            .resolution_override
+            .unwrap_or(self.resolution);
+        let reduced = self.reduced_copies(&self.bodies[index].parts, resolution);
+        let body = &mut self.bodies[index];
+        (body.reduced, body.resolution) = (reduced, resolution);
+    }
+
+    /// Gives `body` the reduced copies of its meshes for its own resolution, else `fallback`.
+    fn reduce(&self, body: &mut FloatingBody, fallback: DampingResolution) {
+        let resolution = body.resolution_override.unwrap_or(fallback);
+        body.reduced = self.reduced_copies(&body.parts, resolution);
+        body.resolution = resolution;
+    }
+
+    /// Per part, the reduced copy of its mesh at `resolution` (`None`: the mesh itself): the
+    /// one a body already holds for the same mesh and resolution, else a new one.
+    fn reduced_copies(
+        &self,
+        parts: &[Part],
+        resolution: DampingResolution,
+    ) -> Vec<Option<Arc<ReducedMesh<f64>>>> {
+        let DampingResolution::Reduced { max_triangles } = resolution else {
+            return alloc::vec![None; parts.len()];
+        };
+        parts
+            .iter()
+            .map(|part| {
+                let held = self
+                    .bodies
+                    .iter()
+                    .filter(|b| b.resolution == resolution)
+                    .flat_map(|b| b.parts.iter().zip(&b.reduced))
+                    .find(|(p, _)| Arc::ptr_eq(&p.mesh, &part.mesh));
+                match held {
+                    Some((_, reduced)) => reduced.clone(),
+                    None => ReducedMesh::new(&part.mesh, max_triangles).map(Arc::new),
+                }
+            })
+            .collect()
     }
 
     /// Replaces the parts and options of body `index`, keeping the books of what was applied
@@ -230,10 +331,13 @@ impl Controller {
         parts: Vec<Part>,
         options: BodyOptions,
     ) -> Result<bool, Error> {
-        let replacement = FloatingBody::new(parts, options)?;
-        let Some(body) = self.bodies.get_mut(index) else {
+        let mut replacement = FloatingBody::new(parts, options)?;
+        let Some(body) = self.bodies.get(index) else {
             return Ok(false);
         };
+        replacement.resolution_override = body.resolution_override;
+        self.reduce(&mut replacement, self.resolution);
+        let body = &mut self.bodies[index];
         *body = FloatingBody {
             share: body.share,
             report: body.report,
