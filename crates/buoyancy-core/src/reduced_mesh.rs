@@ -253,7 +253,8 @@ impl Clustering {
             let [a, b, c] = t.map(|k| points[k as usize]);
             let area2 = (b - a).cross(&(c - a));
             let double_area = area2.norm();
-            if !(double_area > 0.0) {
+            // Zero (a degenerate triangle) or NaN: no plane.
+            if double_area.is_nan() || double_area <= 0.0 {
                 continue;
             }
             let n = area2 / double_area;
@@ -359,7 +360,7 @@ fn area_and_volume6(vertices: &[Vector3<f64>], triangles: &[[u32; 3]]) -> (f64, 
 fn representative(cell: &Cell, lo: &Vector3<f64>, size: f64) -> Vector3<f64> {
     let mean = cell.sum / f64::from(cell.count.max(1));
     let lambda = 1e-3 * cell.quadric.trace() / 3.0;
-    if !(lambda > 0.0) {
+    if lambda.is_nan() || lambda <= 0.0 {
         return mean;
     }
     let system = cell.quadric + Matrix3::identity() * lambda;
