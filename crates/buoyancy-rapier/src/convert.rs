@@ -26,3 +26,13 @@ pub(crate) fn pose_to_nalgebra(pose: &Pose) -> Isometry3<f64> {
         UnitQuaternion::new_normalize(rotation),
     )
 }
+
+/// An `f64` nalgebra isometry as a rapier pose (rounded to `f32`).
+pub(crate) fn pose_from_nalgebra(pose: &Isometry3<f64>) -> Pose {
+    let t = pose.translation.vector.cast::<f32>();
+    let q = pose.rotation.into_inner().cast::<f32>();
+    Pose::from_parts(
+        Vector::new(t.x, t.y, t.z),
+        rapier3d::math::Rotation::from_xyzw(q.i, q.j, q.k, q.w).normalize(),
+    )
+}

@@ -3,8 +3,8 @@
 use std::collections::HashMap;
 
 use buoyancy_core::controller::{
-    BodyOptions, BodyState, Command, Controller, DampingResolution, FloatReport, Motion, Settings,
-    SharedSurface,
+    BodyOptions, BodyState, Command, Controller, DampingResolution, FloatReport, Motion, Rest,
+    Settings, SharedSurface,
 };
 use buoyancy_core::nalgebra::Matrix3;
 use buoyancy_core::{DampingCoefficients, Mesh, Method, Pose, Water};
@@ -12,7 +12,7 @@ use rapier3d::math::Vector;
 use rapier3d::prelude::{ColliderSet, RigidBody, RigidBodyHandle, RigidBodySet, RigidBodyType};
 
 use crate::body_parts::mesh_colliders;
-use crate::convert::{point_to_nalgebra, pose_to_nalgebra, vector_to_nalgebra};
+use crate::convert::{point_to_nalgebra, pose_from_nalgebra, pose_to_nalgebra, vector_to_nalgebra};
 use crate::shapes::MeshCache;
 use crate::{Error, FloatOptions};
 
@@ -221,6 +221,53 @@ impl FloatingBodies {
         self.index
             .get(&body)
             .and_then(|&i| self.controller.report(i))
+    }
+
+    /// Places `body` where it floats at rest in the still water (the still level under
+    /// [waves](Self::set_surface)), for its mass and center of mass as rapier has them: the
+    /// pose where the water it displaces weighs what it weighs and its center of buoyancy lies
+    /// on the vertical through its center of mass, the stable attitude
+    /// ([`Controller::rest`](buoyancy_core::controller::Controller::rest)). Heel and trim are
+    /// measured from its current orientation, whose yaw and the horizontal position of its
+    /// center of mass are kept. Its velocities are set to zero. Call it after registering a
+    /// body and before the first step, so that a spawned boat does not bob.
+    ///
+    /// Returns the core's [`Rest`]: the pose and the equilibrium (draft, heel, trim, GM,
+    /// residuals, whether it is stable). `colliders` are the body's, for its mass properties
+    /// (rapier computes them at the next step; they are computed here).
+    ///
+    /// # Errors
+    /// [`Error::UnknownBody`] if `body` is not registered or not in `bodies`;
+    /// [`Error::Core`] with [`TooHeavyToFloat`](buoyancy_core::Error::TooHeavyToFloat) for a
+    /// body that sinks, or another error of the solver
+    /// ([`Mesh::equilibrium_with`](buoyancy_core::Mesh::equilibrium_with)).
+    pub fn place_at_rest(
+        &mut self,
+        body: RigidBodyHandle,
+        bodies: &mut RigidBodySet,
+        colliders: &ColliderSet,
+    ) -> Result<Rest, Error> {
+        let (Some(&i), Some(rb)) = (self.index.get(&body), bodies.get_mut(body)) else {
+            return Err(Error::UnknownBody(body));
+        };
+        // rapier brings a new body's mass properties (its colliders', and the additional ones
+        // of its builder) up to date at the next step, and its world center of mass with them:
+        // both now, from the colliders and the local center of mass.
+        rb.recompute_mass_properties_from_colliders(colliders);
+        let state = BodyState {
+            center_of_mass: pose_to_nalgebra(rb.position())
+                * point_to_nalgebra(rb.mass_properties().local_mprops.local_com),
+            ..body_state(rb)
+        };
+        let rest = self
+            .controller
+            .rest(i, &state)
+            .ok_or(Error::UnknownBody(body))?
+            .map_err(Error::Core)?;
+        rb.set_position(pose_from_nalgebra(&rest.pose), true);
+        rb.set_linvel(Vector::ZERO, true);
+        rb.set_angvel(Vector::ZERO, true);
+        Ok(rest)
     }
 
     /// The meshes a body floats with (one per shape, in the shape's frame) and their

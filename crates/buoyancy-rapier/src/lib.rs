@@ -116,7 +116,7 @@ mod options;
 mod shapes;
 
 pub use buoyancy_core;
-pub use buoyancy_core::controller::{DampingResolution, FloatReport, Outcome};
+pub use buoyancy_core::controller::{DampingResolution, FloatReport, Outcome, Rest};
 pub use error::Error;
 pub use floating_bodies::FloatingBodies;
 pub use options::{FloatOptions, FloatingColliders};
