@@ -853,6 +853,15 @@ class Controller:
         """Removes body ``index``; returns the force and torque that take its share back off."""
     def forget_applied(self, index: SupportsIndex) -> None:
         """The engine's forces of body ``index`` were reset: its share is zero now."""
+    def rest(
+        self,
+        index: SupportsIndex,
+        position: npt.ArrayLike,
+        quaternion: npt.ArrayLike,
+        center_of_mass: npt.ArrayLike,
+        mass: float,
+    ) -> tuple[_FloatArray, _FloatArray, Equilibrium]:
+        """The body's position (3,) and quaternion (4,) at rest in still water, and the equilibrium."""
     def report(self, index: SupportsIndex) -> FloatReport:
         """What the last ``step`` computed and applied for body ``index``."""
     def parts(self, index: SupportsIndex) -> list[tuple[Mesh, _FloatArray, _FloatArray]]:

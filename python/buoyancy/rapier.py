@@ -92,7 +92,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ._core import Controller, DampingCoefficients, FloatReport, Mesh, Water
+from ._core import Controller, DampingCoefficients, Equilibrium, FloatReport, Mesh, Water
 
 try:
     import rapier3d
@@ -516,6 +516,36 @@ class FloatingBodies:
                 rb.add_force(force_rows[i], wake_flags[i])
             if adds_torque[i]:
                 rb.add_torque(torque_rows[i], wake_flags[i])
+
+    def place_at_rest(self, body: Hashable, bodies: Any, colliders: Any) -> Equilibrium:
+        """Places ``body`` where it floats at rest in the still water (the still level under
+        waves), for its mass and center of mass: the pose at which the water it displaces weighs
+        what it weighs and its center of buoyancy lies on the vertical through its center of
+        mass, the stable attitude (:meth:`Controller.rest`, the Rust adapter's
+        ``place_at_rest``). Heel and trim are measured from its current orientation, whose yaw
+        and the horizontal position of its center of mass are kept; its velocities are set to
+        zero. Call it after :meth:`register` and before the first step, so that a spawned boat
+        does not bob. ``bodies`` and ``colliders`` are the world's sets (``world.rigid_bodies``,
+        ``world.colliders``): the body's mass properties are computed from its colliders first
+        (rapier computes them at the next step).
+
+        Returns the :class:`~buoyancy.Equilibrium` (draft, heel, trim, GM, ...). ``ValueError``
+        for a body that is not registered or does not float; ``RuntimeError`` if the solver
+        does not converge."""
+        i = self._bodies.index.get(body)
+        if i is None:
+            raise ValueError(f"body: {body!r} is not registered (register it first)")
+        rb = bodies[body]
+        rb.recompute_mass_properties_from_colliders(colliders)
+        position, quaternion, equilibrium = self._controller.rest(
+            i, _VEC(rb.translation), _ROTATION(rb.rotation), _POINT(rb.center_of_mass), rb.mass
+        )
+        rb.translation = tuple(position.tolist())
+        rb.rotation = tuple(quaternion.tolist())
+        rb.linvel = (0.0, 0.0, 0.0)
+        rb.angvel = (0.0, 0.0, 0.0)
+        rb.wake_up()
+        return equilibrium
 
     def step(self, world: Any) -> None:
         """``apply(world.rigid_bodies, world.integration_parameters.dt)``, then ``world.step()``,

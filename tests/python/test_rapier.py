@@ -1186,3 +1186,67 @@ def test_the_waves_example_runs_briefly(tmp_path: Any) -> None:
     png = tmp_path / "waves_rapier.png"
     example.plot(runs, seas, png, 6.0, stats_from=3.0)
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+# --- place_at_rest (crates/buoyancy-rapier/tests/place_at_rest.rs) --------------------------------
+
+
+def loaded_box(pool: Pool) -> Any:
+    """A box 2 × 0.5 × 1 m of 400 kg/m³ with a dense ball of 30 kg at (0.4, −0.1, 0.2) in it,
+    started 1.5 m up and tilted: it floats heeled and trimmed."""
+    ball_density = 30.0 / (4.0 / 3.0 * math.pi * 0.05**3)
+    return pool.add(
+        pose((0.5, 1.5, -0.3), axis_angle((1, 0, 0), 0.3), axis_angle((0, 0, 1), -0.25), axis_angle((0, 1, 0), 0.2)),
+        [
+            rapier3d.Collider.cuboid(1.0, 0.25, 0.5).density(400.0),
+            rapier3d.Collider.ball(0.05).density(ball_density).translation((0.4, -0.1, 0.2)),
+        ],
+        buoyancy.shapes.cube().scaled((2.0, 0.5, 1.0)),
+    )
+
+
+def attitude(rb: Any) -> tuple[np.ndarray, np.ndarray]:
+    """The world center of mass and the body's up axis (its y)."""
+    q = np.array(rb.rotation.to_tuple())
+    x, y, z, w = q
+    up = np.array([2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w)])
+    return vec(rb.center_of_mass), up
+
+
+def test_a_body_placed_at_rest_stays_there() -> None:
+    pool = Pool()
+    h = loaded_box(pool)
+    rest = pool.water.place_at_rest(h, pool.world.rigid_bodies, pool.world.colliders)
+    assert rest.stable and abs(rest.heel) > 0.5 and abs(rest.trim) > 0.5
+    assert pool.body(h).mass == pytest.approx(430.0, rel=1e-5)
+    com, up = attitude(pool.body(h))
+    pool.run(5.0)
+    com_after, up_after = attitude(pool.body(h))
+    assert np.linalg.norm(com_after - com) < 2e-3
+    assert math.degrees(math.acos(min(1.0, float(up @ up_after)))) < 0.2
+
+
+def test_the_rest_is_where_a_dropped_body_settles() -> None:
+    dropped = Pool()
+    h = loaded_box(dropped)
+    dropped.run(40.0)
+    dropped.assert_equilibrium(h, 2.0, "dropped box")
+    placed = Pool()
+    p = loaded_box(placed)
+    placed.water.place_at_rest(p, placed.world.rigid_bodies, placed.world.colliders)
+    placed.apply()  # rapier's world center of mass follows the new pose at the next step
+    (com, up), (com_rest, up_rest) = attitude(dropped.body(h)), attitude(placed.body(p))
+    assert abs(com[1] - com_rest[1]) < 5e-3
+    assert math.degrees(math.acos(min(1.0, float(up @ up_rest)))) < 0.5
+
+
+def test_place_at_rest_errors() -> None:
+    pool = Pool()
+    stone = pool.add(
+        rapier3d.RigidBody.dynamic(), rapier3d.Collider.ball(0.5).density(2500.0), buoyancy.shapes.uv_sphere(0.5)
+    )
+    with pytest.raises(ValueError, match="does not float"):
+        pool.water.place_at_rest(stone, pool.world.rigid_bodies, pool.world.colliders)
+    loose = pool.world.add_body(rapier3d.RigidBody.dynamic(), [rapier3d.Collider.ball(0.5)])
+    with pytest.raises(ValueError, match="^body: .* is not registered"):
+        pool.water.place_at_rest(loose, pool.world.rigid_bodies, pool.world.colliders)

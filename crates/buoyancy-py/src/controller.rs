@@ -26,6 +26,7 @@ use crate::gerstner::PyGerstnerWaves;
 use crate::height_grid::PyHeightGrid;
 use crate::mesh::PyMesh;
 use crate::pressure::Pressure;
+use crate::stability::{self, PyEquilibrium};
 use crate::step_inputs::{Columns, Input};
 use crate::surface_function::{FunctionFailure, SurfaceFunction};
 use crate::water::PyWater;
@@ -672,6 +673,80 @@ impl PyController {
             .report(i)
             .unwrap_or_else(|| unreachable!("body {i} was checked to exist"));
         Ok(PyFloatReport { inner })
+    }
+
+    /// Where body ``index`` comes to rest in the still water (the still level under waves), for
+    /// its mass and center of mass: the pose at which the water it displaces weighs what it
+    /// weighs and its center of buoyancy lies on the vertical through its center of mass, the
+    /// stable attitude (see :meth:`Mesh.equilibrium`; a body of several parts is solved as one
+    /// mesh, its parts merged). Heel and trim are measured from the given orientation, whose yaw
+    /// and the horizontal position of the center of mass are kept. An engine's glue sets the body
+    /// there, at rest, before the first step.
+    ///
+    /// Parameters
+    /// ----------
+    /// index : int
+    /// position : array_like, shape (3,)
+    ///     The body's position now, world frame, m.
+    /// quaternion : array_like, shape (4,)
+    ///     Its orientation now, ``(x, y, z, w)``.
+    /// center_of_mass : array_like, shape (3,)
+    ///     Its center of mass now, world frame, m.
+    /// mass : float
+    ///     Kg, positive.
+    ///
+    /// Returns
+    /// -------
+    /// (ndarray, ndarray, Equilibrium)
+    ///     The body's position (3,) and quaternion (4,) at rest, and the equilibrium (draft,
+    ///     heel, trim, GM, ...). ``IndexError`` for no such body, ``ValueError`` for a body
+    ///     that does not float, ``RuntimeError`` if the solver does not converge.
+    #[pyo3(text_signature = "(self, index, position, quaternion, center_of_mass, mass)")]
+    #[allow(clippy::type_complexity)]
+    fn rest<'py>(
+        &self,
+        py: Python<'py>,
+        index: &Bound<'_, PyAny>,
+        position: &Bound<'_, PyAny>,
+        quaternion: &Bound<'_, PyAny>,
+        center_of_mass: &Bound<'_, PyAny>,
+        mass: &Bound<'_, PyAny>,
+    ) -> PyResult<(
+        Bound<'py, PyArray1<f64>>,
+        Bound<'py, PyArray1<f64>>,
+        PyEquilibrium,
+    )> {
+        let i = self.body(index)?;
+        let pose = Pose::from_parts(
+            Translation3::from(convert::vector3(position, "position")?),
+            convert::rotation(quaternion, "quaternion")?,
+        );
+        let mass = convert::real(mass, "mass")?;
+        let state = BodyState {
+            pose,
+            center_of_mass: Point3::from(convert::vector3(center_of_mass, "center_of_mass")?),
+            linear_velocity: Vector3::zeros(),
+            angular_velocity: Vector3::zeros(),
+            mass,
+            inverse_mass: Vector3::zeros(),
+            inverse_inertia: Default::default(),
+            gravity_scale: 1.0,
+            applied_force: Vector3::zeros(),
+            applied_torque: Vector3::zeros(),
+            motion: Default::default(),
+            sleeping: false,
+        };
+        let controller = &self.inner;
+        let rest = py
+            .detach(|| controller.rest(i, &state))
+            .unwrap_or_else(|| unreachable!("body {i} was checked to exist"))
+            .map_err(stability::rest_error)?;
+        let q = rest.pose.rotation.coords;
+        Ok((
+            arrays::vector(py, rest.pose.translation.vector.as_slice()),
+            arrays::vector(py, &[q.x, q.y, q.z, q.w]),
+            PyEquilibrium::from(rest.equilibrium),
+        ))
     }
 
     /// The parts of body ``index``: a list of ``(mesh, position, quaternion)``, each mesh the

@@ -57,6 +57,21 @@ fn numbers(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<f64>> {
     Ok(floats.values)
 }
 
+/// The Python exception for an error of `Controller::rest`: a mass out of range names `mass`.
+pub fn rest_error(e: Error) -> PyErr {
+    match e {
+        Error::InvalidLoading { parameter, reason } => arg_error(
+            if parameter == "mass" {
+                "mass"
+            } else {
+                "center_of_mass"
+            },
+            reason,
+        ),
+        e => solver_error(e, &[]),
+    }
+}
+
 /// Degrees to radians.
 fn radians(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<f64> {
     Ok(convert::real(obj, name)?.to_radians())
@@ -267,6 +282,12 @@ pub fn hydrostatic_table(
 #[pyclass(frozen, module = "buoyancy", name = "Equilibrium")]
 pub struct PyEquilibrium {
     inner: Equilibrium<f64>,
+}
+
+impl From<Equilibrium<f64>> for PyEquilibrium {
+    fn from(inner: Equilibrium<f64>) -> Self {
+        PyEquilibrium { inner }
+    }
 }
 
 #[pymethods]
