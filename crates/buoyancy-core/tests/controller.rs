@@ -48,7 +48,11 @@ fn state(i: usize) -> BodyState {
 }
 
 fn parts(i: usize) -> Vec<Part> {
-    let mesh = if i.is_multiple_of(2) { cube() } else { sphere() };
+    let mesh = if i.is_multiple_of(2) {
+        cube()
+    } else {
+        sphere()
+    };
     vec![Part {
         mesh,
         shape_to_body: Pose::identity(),
