@@ -2,7 +2,7 @@
 hydrostatic table and the righting-arm (GZ) curve, from a mesh file.
 
 ``python -m buoyancy.stability hull.stl --mass 1200 --cog 0 0 0.3 --up z --out DIR`` loads the
-mesh (STL, OBJ or PLY: a closed surface, the deck included), finds where the body of
+mesh (STL, OBJ or PLY; a hull without a deck with ``--close-openings``), finds where the body of
 that mass and center of gravity (mesh frame, m) floats at rest, prints the equilibrium, the
 metacentric heights there and a hydrostatic table over drafts around it, and writes to ``DIR``:
 
@@ -111,6 +111,8 @@ def print_curve(curve: GzCurve) -> None:
         "  angle of vanishing stability "
         + (f"{vanishing:.1f}°" if vanishing is not None else f"beyond {last:g}° (GZ stays positive)")
     )
+    if curve.flooding_angle is not None:
+        print(f"  the water reaches an opening at {curve.flooding_angle:g}°: the curve stops there")
     for upto in (30.0, 40.0):
         if upto <= last:
             print(f"  area under GZ to {upto:g}°: {curve.area_up_to(upto):.4f} m·rad")
@@ -172,6 +174,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--heel-step", type=float, default=2.5, help="heel step, ° (default 2.5)")
     parser.add_argument("--fixed-trim", action="store_true", help="hold the trim at the equilibrium's")
     parser.add_argument("--rows", type=int, default=9, help="drafts in the hydrostatic table (default 9)")
+    parser.add_argument(
+        "--close-openings",
+        action="store_true",
+        help="close the mesh's planar openings with lids (a hull without a deck); the GZ curve stops "
+        "where the water reaches one",
+    )
     parser.add_argument("--out", type=pathlib.Path, default=pathlib.Path("."), help="output folder (default .)")
     args = parser.parse_args(argv)
 
@@ -183,7 +191,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.rows < 1:
         parser.error("--rows must be at least 1")
     try:
-        mesh = load(args.mesh)
+        mesh = load(args.mesh, close_openings=args.close_openings)
         water = Water(density=args.density, gravity=args.gravity, normal=up)
         rest = mesh.equilibrium(args.mass, args.cog, water=water, axis=axis)
         heels = np.arange(0.0, args.heel_max + 1e-9, args.heel_step)

@@ -3,6 +3,7 @@ square-log rule, and Mesh.buoyancy at the poses they return."""
 
 import doctest
 import math
+import pathlib
 
 import numpy as np
 import pytest
@@ -155,6 +156,7 @@ def test_errors_name_the_argument(call, error: type[Exception], match: str) -> N
         buoyancy.Mesh.equilibrium,
         buoyancy.Mesh.gz_curve,
         buoyancy.Mesh.hydrostatic_table,
+        buoyancy.Mesh.close_openings,
         buoyancy.Equilibrium,
         buoyancy.GzCurve,
         buoyancy.HydrostaticTable,
@@ -169,3 +171,69 @@ def test_docstring_examples(obj: object) -> None:
     runner.run(test)
     result = runner.summarize(verbose=False)
     assert result.attempted > 0 and result.failed == 0
+
+
+def holed_box() -> tuple[np.ndarray, np.ndarray]:
+    """A unit cube (y up) without the upper half of its +x face: a planar hole in its side."""
+    cube = shapes.cube(2)
+    corners = cube.vertices[cube.faces]
+    hole = np.all((corners[:, :, 0] == 0.5) & (corners[:, :, 1] >= 0.0), axis=1)
+    return cube.vertices, cube.faces[~hole]
+
+
+def test_open_hull_closed_by_a_lid() -> None:
+    vertices, faces = holed_box()
+    with pytest.raises(buoyancy.MeshError):
+        buoyancy.Mesh(vertices, faces)
+    hull = buoyancy.Mesh.close_openings(vertices, faces)
+    assert len(hull.openings) == 1 and len(hull.openings[0]) == 6
+    assert hull.volume == pytest.approx(1.0, rel=1e-12)
+    assert hull.n_vertices == len(vertices) + 1 and hull.n_triangles == len(faces) + 6
+    # Pickled as given and closed again; transformed copies keep their openings.
+    import pickle
+
+    copy = pickle.loads(pickle.dumps(hull))
+    assert copy == hull and len(copy.openings) == 1
+    moved = hull.translated((1.0, 2.0, 3.0))
+    assert len(moved.openings) == 1 and pickle.loads(pickle.dumps(moved)) == moved
+    # A closed mesh through close_openings is the plain mesh.
+    closed = shapes.cube(2)
+    assert buoyancy.Mesh.close_openings(closed.vertices, closed.faces) == closed
+
+
+def test_water_reaching_an_opening() -> None:
+    hull = buoyancy.Mesh.close_openings(*holed_box())
+    rest = hull.equilibrium(300.0, (0, -0.2, 0), axis=(0, 0, 1))  # 0.3 m deep, the hole 0.2 m up
+    assert rest.draft == pytest.approx(0.3, rel=1e-9)
+    with pytest.raises(ValueError, match="opening"):
+        hull.equilibrium(700.0, (0, -0.2, 0), axis=(0, 0, 1))  # would float 0.7 m deep
+    with pytest.raises(ValueError, match="opening"):
+        hull.hydrostatics((0, 0, 0), position=(0, -0.3, 0))
+    heels = np.arange(0, 91, 5)
+    one = hull.gz_curve(300.0, (0, -0.2, 0), heels, axis=(0, 0, 1))
+    other = hull.gz_curve(300.0, (0, -0.2, 0), heels, axis=(0, 0, -1))
+    flooded = one if one.flooding_angle is not None else other
+    dry = other if flooded is one else one
+    assert dry.flooding_angle is None and len(dry) == len(heels)
+    # Wall-sided while the bottom is wet: the hole's lower edge meets the water at atan(0.2/0.5).
+    assert math.degrees(math.atan(0.4)) <= flooded.flooding_angle < math.degrees(math.atan(0.4)) + 5
+    assert flooded.heel.max() < flooded.flooding_angle
+
+
+def test_cli_closes_openings(tmp_path: pathlib.Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from buoyancy.stability import main
+
+    vertices, faces = holed_box()
+    path = tmp_path / "open.obj"
+    path.write_text(
+        "".join(f"v {x:.17g} {y:.17g} {z:.17g}\n" for x, y, z in vertices)
+        + "".join(f"f {a + 1} {b + 1} {c + 1}\n" for a, b, c in faces)
+    )
+    args = [str(path), "--mass", "300", "--cog", "0", "-0.2", "0", "--up", "y", "--out", str(tmp_path)]
+    assert main(args) == 2  # not closed
+    assert "open" in capsys.readouterr().err
+    printed = []
+    for axis in ("--axis=z", "--axis=-z"):  # heeled one way, the hole goes under
+        assert main([*args, axis, "--close-openings"]) == 0
+        printed.append(capsys.readouterr().out)
+    assert sum("the water reaches an opening at" in out for out in printed) == 1

@@ -362,3 +362,72 @@ fn f32_hulls_close_too() {
         .unwrap();
     assert!(((b.submerged_volume - c.submerged_volume) / c.submerged_volume).abs() < 1e-6);
 }
+
+/// A unit cube with the upper half of its +x face open (a planar hole in its side, y from 0 to
+/// 1/2), closed by a lid.
+fn holed_box() -> Mesh<f64> {
+    let (v, t) = shape::cube::<f64>(2).unwrap();
+    let hull: Vec<[u32; 3]> = t
+        .into_iter()
+        .filter(|t| {
+            !t.iter()
+                .all(|&i| v[i as usize].x == 0.5 && v[i as usize].y >= 0.0)
+        })
+        .collect();
+    let mesh = Mesh::close_openings(v, hull).unwrap();
+    assert_eq!(mesh.openings().len(), 1);
+    mesh
+}
+
+#[test]
+fn equilibrium_and_gz_stop_where_the_water_reaches_an_opening() {
+    use buoyancy_core::hydrostatics::{EquilibriumOptions, LoadingCondition, Trim};
+    let mesh = holed_box();
+    let water = Water::default();
+    // 300 kg: 0.3 m deep, the hole (from y = 0 in the box) 0.2 m above the water.
+    let light = LoadingCondition::new(Point3::new(0.0, -0.2, 0.0))
+        .unwrap()
+        .with_mass(300.0)
+        .unwrap()
+        .with_longitudinal_axis(Vector3::z())
+        .unwrap();
+    let rest = mesh.equilibrium(&water, &light).unwrap();
+    assert!((rest.draft - 0.3).abs() < 1e-9);
+    // 700 kg would float 0.7 m deep, the water 0.2 m up the hole: the hull floods.
+    let heavy = light.with_mass(700.0).unwrap();
+    assert!(matches!(
+        mesh.equilibrium(&water, &heavy),
+        Err(Error::OpeningSubmerged { opening: 0, .. })
+    ));
+    // Heeled about z one way the holed side goes down, about −z the other: one curve stops at
+    // the first heel whose waterline reaches y = 0 on the x = 1/2 face, the other runs to 90°.
+    let heels: Vec<f64> = (0..=18).map(|k| f64::from(k) * 5f64.to_radians()).collect();
+    let options = EquilibriumOptions::default();
+    let up = mesh
+        .gz_curve(&water, &light, &heels, Trim::Free, &options)
+        .unwrap();
+    // The other way: the same heels about the reversed axis.
+    let reversed = light.with_longitudinal_axis(-Vector3::z()).unwrap();
+    let down = mesh
+        .gz_curve(&water, &reversed, &heels, Trim::Free, &options)
+        .unwrap();
+    let (flooded, dry) = match (up.flooding, down.flooding) {
+        (Some(_), None) => (&up, &down),
+        (None, Some(_)) => (&down, &up),
+        other => panic!("one heel direction should flood, not {other:?}"),
+    };
+    assert_eq!(dry.points.len(), heels.len());
+    let angle = flooded.flooding.unwrap().abs();
+    // The hole's bottom edge (x = 1/2, y = 0) meets the water, wall-sided while the bottom is
+    // wet: tan φ = (freeboard of y = 0) / (half breadth) = 0.2 / 0.5 → 21.8°.
+    let wall_sided = (0.2f64 / 0.5).atan();
+    assert!(angle >= wall_sided && angle < wall_sided + 5f64.to_radians() + 1e-12);
+    assert!(flooded.points.iter().all(|p| p.heel.abs() < angle));
+    assert!(!flooded.points.is_empty());
+    // Upright with the hole under water: no curve at all.
+    let sunk = [0.0, 0.1];
+    assert!(matches!(
+        mesh.gz_curve(&water, &heavy, &sunk, Trim::Free, &options),
+        Err(Error::OpeningSubmerged { .. })
+    ));
+}

@@ -15,6 +15,9 @@ use crate::mesh::PyMesh;
 /// ----------
 /// path : str or os.PathLike
 ///     The file.
+/// close_openings : bool
+///     Close the mesh's planar openings with lids, as :meth:`Mesh.close_openings` does (a hull
+///     without a deck); default ``False``, the mesh must be closed.
 ///
 /// Raises
 /// ------
@@ -33,12 +36,17 @@ use crate::mesh::PyMesh;
 /// >>> buoyancy.load(path)
 /// Mesh(n_vertices=4, n_triangles=4, volume=0.166667, centroid=[0.25, 0.25, 0.25])
 #[pyfunction]
-pub fn load(py: Python<'_>, path: &Bound<'_, PyAny>) -> PyResult<PyMesh> {
+#[pyo3(signature = (path, close_openings=false), text_signature = "(path, close_openings=False)")]
+pub fn load(py: Python<'_>, path: &Bound<'_, PyAny>, close_openings: bool) -> PyResult<PyMesh> {
     let path: PathBuf = path
         .extract()
         .map_err(|_| type_error("path", "a str or os.PathLike", path))?;
     let shape = py
         .detach(|| buoyancy_core::io::load::<f64>(&path))
         .map_err(|e| to_py(e, None))?;
-    PyMesh::build(py, shape)
+    if close_openings {
+        PyMesh::build_closing_openings(py, shape)
+    } else {
+        PyMesh::build(py, shape)
+    }
 }

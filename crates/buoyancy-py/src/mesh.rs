@@ -9,7 +9,7 @@ use buoyancy_core::nalgebra::{Matrix4, Point3, Translation3, UnitQuaternion, Vec
 use buoyancy_core::{Error, Pose};
 use numpy::{PyArray1, PyArray2};
 use pyo3::prelude::*;
-use pyo3::types::PyType;
+use pyo3::types::{PySlice, PyType};
 
 use crate::arrays;
 use crate::batch::{About, Batch, batch_times};
@@ -116,8 +116,12 @@ fn scale_factors(factor: &Bound<'_, PyAny>) -> PyResult<Vector3<f64>> {
 #[pyclass(frozen, eq, module = "buoyancy", name = "Mesh")]
 pub struct PyMesh {
     inner: buoyancy_core::Mesh<f64>,
-    /// The vertices as given (for `vertices`, equality and pickling, bit for bit).
+    /// The vertices as given (for `vertices`, equality and pickling, bit for bit), and after
+    /// them the centers of the lids of a hull built by `close_openings`.
     vertices: Vec<Point3<f64>>,
+    /// For a hull built by `close_openings`: how many of the vertices and triangles were
+    /// given (the lids' follow), so that pickling rebuilds it from those.
+    given: Option<(usize, usize)>,
     /// The hash of `vertices` and the faces, computed on first use.
     hash: OnceLock<u64>,
 }
@@ -126,6 +130,7 @@ pub struct PyMesh {
 impl PartialEq for PyMesh {
     fn eq(&self, other: &Self) -> bool {
         self.vertices == other.vertices
+            && self.given == other.given
             && self.inner.was_reoriented() == other.inner.was_reoriented()
             && self.inner.triangles() == other.inner.triangles()
     }
@@ -136,6 +141,7 @@ impl PyMesh {
         PyMesh {
             inner,
             vertices,
+            given: None,
             hash: OnceLock::new(),
         }
     }
@@ -153,6 +159,23 @@ impl PyMesh {
             .detach(move || buoyancy_core::Mesh::new(vertices, triangles))
             .map_err(|e| to_py(e, None))?;
         Ok(PyMesh::new(inner, kept))
+    }
+
+    /// A hull whose planar openings are closed by lids (the core's `Mesh::close_openings`),
+    /// with the interpreter lock released.
+    pub fn build_closing_openings(py: Python<'_>, (vertices, triangles): Shape) -> PyResult<Self> {
+        let given = (vertices.len(), triangles.len());
+        let mut kept = vertices.clone();
+        let inner = py
+            .detach(move || buoyancy_core::Mesh::close_openings(vertices, triangles))
+            .map_err(|e| to_py(e, None))?;
+        // The lids' centers, as the core placed them.
+        kept.extend((given.0..inner.vertex_count()).map(|i| inner.vertex(i)));
+        let opened = !inner.openings().is_empty();
+        Ok(PyMesh {
+            given: opened.then_some(given),
+            ..PyMesh::new(inner, kept)
+        })
     }
 
     /// This mesh mapped by `map`, the core's transform by the affine `matrix`, with the
@@ -173,7 +196,12 @@ impl PyMesh {
         let vertices = (0..mesh.vertex_count())
             .map(|i| matrix.transform_point(&mesh.vertex(i)))
             .collect();
-        Ok(PyMesh::new(inner, vertices))
+        // The core keeps the openings through the transform; pickling closes them again from
+        // the moved rims (an affine map keeps a lid's center the mean of its rim).
+        Ok(PyMesh {
+            given: self.given,
+            ..PyMesh::new(inner, vertices)
+        })
     }
 
     pub(crate) fn pose(
@@ -225,6 +253,48 @@ impl PyMesh {
     ) -> PyResult<Self> {
         let shape = mesh_arrays(vertices, faces)?;
         PyMesh::build(py, shape)
+    }
+
+    /// A hull surface with planar openings (a hull without a deck, the usual input of naval
+    /// architecture), each closed by a flat lid: a fan of triangles from a vertex added at the
+    /// mean of the opening's rim. Everything computed counts the lids as hull, which holds while
+    /// the water stays below every rim: :meth:`hydrostatics` and :meth:`equilibrium` raise
+    /// ``ValueError`` when the water reaches one, :meth:`gz_curve` stops there
+    /// (``GzCurve.flooding_angle``), :meth:`hydrostatic_table` refuses such a draft. A closed
+    /// mesh is built as ``Mesh(vertices, faces)`` builds it.
+    ///
+    /// ``vertices`` then ``faces`` hold the lids' centers and triangles after the given ones;
+    /// ``openings`` lists each rim's vertices. A rim that is not planar (within 1e-6 of its
+    /// size) is a ``ValueError`` naming it.
+    ///
+    /// Examples
+    /// --------
+    /// >>> cube = buoyancy.shapes.cube(2)
+    /// >>> top = np.all(cube.vertices[cube.faces][:, :, 1] == 0.5, axis=1)   # the y = 0.5 face
+    /// >>> open_box = buoyancy.Mesh.close_openings(cube.vertices, cube.faces[~top])
+    /// >>> len(open_box.openings), round(open_box.volume, 12)
+    /// (1, 1.0)
+    #[classmethod]
+    #[pyo3(text_signature = "(vertices, faces)")]
+    fn close_openings(
+        _cls: &Bound<'_, PyType>,
+        py: Python<'_>,
+        vertices: &Bound<'_, PyAny>,
+        faces: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        let shape = mesh_arrays(vertices, faces)?;
+        PyMesh::build_closing_openings(py, shape)
+    }
+
+    /// The openings closed by lids (:meth:`close_openings`): a list of int64 arrays, each the
+    /// indices of one rim's vertices in order; empty for a closed mesh.
+    #[getter]
+    fn openings<'py>(&self, py: Python<'py>) -> Vec<Bound<'py, PyArray1<i64>>> {
+        self.inner
+            .openings()
+            .iter()
+            .map(|o| arrays::column(py, o.rim().iter().map(|&i| i64::from(i))))
+            .collect()
     }
 
     /// Builds a mesh from a ``trimesh.Trimesh`` (or any object with ``vertices`` and ``faces``),
@@ -1054,12 +1124,27 @@ impl PyMesh {
 
     /// Pickles as the vertices and faces as given: unpickling validates again and gives a
     /// mesh with bit-identical results.
-    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> (Bound<'py, PyType>, MeshArgs<'py>) {
+    ///
+    /// A hull built by :meth:`close_openings` pickles as its given vertices and faces, closed
+    /// again when unpickled.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, MeshArgs<'py>)> {
         let py = slf.py();
         let this = slf.get();
-        (
-            slf.get_type(),
-            (this.vertices(py), this.faces_array(py, true)),
-        )
+        let (vertices, faces) = (this.vertices(py), this.faces_array(py, true));
+        Ok(match this.given {
+            None => (slf.get_type().into_any(), (vertices, faces)),
+            Some((n_vertices, n_faces)) => {
+                let vertices = vertices.call_method1(
+                    "__getitem__",
+                    (PySlice::new(py, 0, n_vertices as isize, 1),),
+                )?;
+                let faces = faces
+                    .call_method1("__getitem__", (PySlice::new(py, 0, n_faces as isize, 1),))?;
+                (
+                    slf.get_type().getattr("close_openings")?,
+                    (vertices.cast_into()?, faces.cast_into()?),
+                )
+            }
+        })
     }
 }

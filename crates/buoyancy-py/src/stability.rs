@@ -379,6 +379,9 @@ impl PyEquilibrium {
 /// angle_of_vanishing_stability : float or None
 ///     The heel (degrees) past the upright where ``GZ`` falls back to zero, interpolated;
 ///     ``None`` if it does not within the curve.
+/// flooding_angle : float or None
+///     For a hull whose openings were closed by lids: the first heel given (degrees) at which
+///     the water reaches an opening; the curve stops before it. ``None`` otherwise.
 ///
 /// Examples
 /// --------
@@ -476,6 +479,10 @@ impl PyGzCurve {
         self.inner
             .max_gz()
             .map_or(f64::NAN, |(heel, _)| heel.to_degrees())
+    }
+    #[getter]
+    fn flooding_angle(&self) -> Option<f64> {
+        self.inner.flooding.map(f64::to_degrees)
     }
     #[getter]
     fn angle_of_vanishing_stability(&self) -> Option<f64> {

@@ -334,7 +334,7 @@ impl<'a, T: Real> Solver<'a, T> {
         let loading = self.internal_loading(&state.pose)?;
         Ok(self
             .mesh
-            .hydrostatics(&state.pose, self.water, &loading)?
+            .closed_hydrostatics(&state.pose, self.water, &loading)?
             .stiffness)
     }
 
@@ -516,7 +516,9 @@ impl<T: Real> Mesh<T> {
     /// [`Error::InvalidWater`] for zero gravity; [`Error::InvalidPose`] for a start pose that
     /// is not finite; [`Error::InvalidLoading`] if the longitudinal axis is vertical at the
     /// start; [`Error::InvalidSolverOption`] for a tolerance outside `(0, 0.1)` or no
-    /// iterations; [`Error::NoConvergence`] if the residuals do not reach the tolerance.
+    /// iterations; [`Error::NoConvergence`] if the residuals do not reach the tolerance;
+    /// [`Error::OpeningSubmerged`] if the water reaches an opening of a hull closed by
+    /// [`Mesh::close_openings`] at rest (the hull would flood).
     pub fn equilibrium_with(
         &self,
         water: &Water<T>,

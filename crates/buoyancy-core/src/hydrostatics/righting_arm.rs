@@ -45,8 +45,13 @@ pub struct GzPoint<T: Real> {
 /// A righting-arm curve: see [`Mesh::gz_curve`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct GzCurve<T: Real> {
-    /// The points, in the order of the heels given (increasing).
+    /// The points, in the order of the heels given (increasing), up to the last before the
+    /// water reaches an opening (see [`flooding`](Self::flooding)).
     pub points: Vec<GzPoint<T>>,
+    /// For a hull closed by [`Mesh::close_openings`]: the first heel given at which the water
+    /// reaches one of its openings (rad), where the curve stops (the hull floods; past it the
+    /// lid is no hull). `None` when every heel keeps them dry, and for a closed mesh.
+    pub flooding: Option<T>,
     /// Newton iterations taken for the trim, over all points.
     pub iterations: usize,
 }
@@ -132,7 +137,9 @@ impl<T: Real> Mesh<T> {
     ///
     /// # Errors
     /// As [`Mesh::equilibrium_with`]; [`Error::InvalidSolverOption`] for `heels` empty, not
-    /// finite or not strictly increasing, or a fixed trim that is not finite.
+    /// finite or not strictly increasing, or a fixed trim that is not finite;
+    /// [`Error::OpeningSubmerged`] when the water reaches an opening at the first heel (at a
+    /// later one the curve stops there, see [`GzCurve::flooding`]).
     pub fn gz_curve(
         &self,
         water: &Water<T>,
@@ -166,9 +173,20 @@ impl<T: Real> Mesh<T> {
         let mut solver = Solver::new(self, water, loading, options)?;
         let mut points = Vec::with_capacity(heels.len());
         let mut height = None;
+        let mut flooding = None;
         for &heel in heels {
             let start = solver.solve(heel, theta, height)?;
             let state = solver.minimize(start, free)?;
+            match self.check_openings(&state.pose, water) {
+                Ok(()) => {}
+                // The first heel: the hull floods upright; no curve.
+                Err(e @ Error::OpeningSubmerged { .. }) if points.is_empty() => return Err(e),
+                Err(Error::OpeningSubmerged { .. }) => {
+                    flooding = Some(heel);
+                    break;
+                }
+                Err(e) => return Err(e),
+            }
             theta = state.trim;
             height = Some(state.height);
             let g = state.pose * solver.loading.center_of_gravity();
@@ -188,6 +206,7 @@ impl<T: Real> Mesh<T> {
         }
         Ok(GzCurve {
             points,
+            flooding,
             iterations: solver.iterations,
         })
     }

@@ -231,9 +231,24 @@ impl<T: Real> Mesh<T> {
     /// # Errors
     /// [`Error::InvalidPose`] if the pose has a NaN or infinite component or a zero
     /// quaternion; [`Error::InvalidLoading`] if the longitudinal axis is vertical at this pose
-    /// (within `√ε` rad: it has no direction in the waterplane); [`Error::NonFiniteResult`] if the result overflows.
+    /// (within `√ε` rad: it has no direction in the waterplane); [`Error::NonFiniteResult`] if
+    /// the result overflows; [`Error::OpeningSubmerged`] when the water reaches an opening of a
+    /// hull closed by [`Mesh::close_openings`] (its lid is not hull then).
     /// (The loading's own values are checked when it is built, see [`LoadingCondition`].)
     pub fn hydrostatics(
+        &self,
+        pose: &Pose<T>,
+        water: &Water<T>,
+        loading: &LoadingCondition<T>,
+    ) -> Result<Hydrostatics<T>, Error> {
+        self.openings_dry(&Frame::new(self, pose, water)?)?;
+        self.closed_hydrostatics(pose, water, loading)
+    }
+
+    /// [`hydrostatics`](Self::hydrostatics) of the closed mesh, its lids counted as hull
+    /// wherever the water is: for the equilibrium solver's iterates, which may wet a lid on the
+    /// way to a rest that does not.
+    pub(crate) fn closed_hydrostatics(
         &self,
         pose: &Pose<T>,
         water: &Water<T>,
