@@ -262,9 +262,9 @@ impl<T: Real> Mesh<T> {
         let mut rows = Vec::with_capacity(drafts.len());
         for &draft in drafts {
             let pose = Pose::from_parts(Translation3::from(-n * (bottom + draft)), rotation);
-            let frame = Frame::new(self, &pose, water)?;
-            self.openings_dry(&frame)?;
+            // Mesh::hydrostatics refuses a pose where the water reaches an opening.
             let h = self.hydrostatics(&pose, water, &loading)?;
+            let frame = Frame::new(self, &pose, water)?;
             let wp = &h.waterplane;
             let origin = pose.translation.vector;
             let e1_world = wp.axes[0].into_inner();
