@@ -494,25 +494,25 @@ class Mesh:
         """The section of the still water plane through the body at a pose, world frame."""
     def hydrostatics(
         self,
-        center_of_gravity: npt.ArrayLike,
+        center_of_mass: npt.ArrayLike,
         position: npt.ArrayLike | None = (0, 0, 0),
         rotation: npt.ArrayLike | None = None,
         water: Water | None = None,
         mass: float | None = None,
         reference_point: npt.ArrayLike | None = None,
-        longitudinal_axis: npt.ArrayLike | None = (1, 0, 0),
+        axis: npt.ArrayLike | None = (1, 0, 0),
         keel: npt.ArrayLike | None = None,
     ) -> Hydrostatics:
         """KB, KG, BM, GM and the heave-roll-pitch stiffness at a pose; points in the mesh frame."""
     def stiffness(
         self,
-        center_of_gravity: npt.ArrayLike,
+        center_of_mass: npt.ArrayLike,
         position: npt.ArrayLike | None = (0, 0, 0),
         rotation: npt.ArrayLike | None = None,
         water: Water | None = None,
         mass: float | None = None,
         reference_point: npt.ArrayLike | None = None,
-        longitudinal_axis: npt.ArrayLike | None = (1, 0, 0),
+        axis: npt.ArrayLike | None = (1, 0, 0),
         keel: npt.ArrayLike | None = None,
     ) -> _FloatArray:
         """Shape (3, 3): heave, roll, pitch; ``hydrostatics(...).stiffness``."""
@@ -550,8 +550,8 @@ class Mesh:
         drafts: npt.ArrayLike,
         water: Water | None = None,
         rotation: npt.ArrayLike | None = None,
-        longitudinal_axis: npt.ArrayLike | None = (1, 0, 0),
-        center_of_gravity: npt.ArrayLike | None = None,
+        axis: npt.ArrayLike | None = (1, 0, 0),
+        center_of_mass: npt.ArrayLike | None = None,
         length: float | None = None,
     ) -> HydrostaticTable:
         """The body upright at each draft (m): one row a draft."""
@@ -869,6 +869,7 @@ class Controller:
         quaternion: npt.ArrayLike,
         center_of_mass: npt.ArrayLike,
         mass: float,
+        gravity_scale: float = 1.0,
     ) -> tuple[_FloatArray, _FloatArray, Equilibrium]:
         """The body's position (3,) and quaternion (4,) at rest in still water, and the equilibrium."""
     def report(self, index: SupportsIndex) -> FloatReport:

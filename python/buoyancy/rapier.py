@@ -538,7 +538,7 @@ class FloatingBodies:
         rb = bodies[body]
         rb.recompute_mass_properties_from_colliders(colliders)
         position, quaternion, equilibrium = self._controller.rest(
-            i, _VEC(rb.translation), _ROTATION(rb.rotation), _POINT(rb.center_of_mass), rb.mass
+            i, _VEC(rb.translation), _ROTATION(rb.rotation), _POINT(rb.center_of_mass), rb.mass, rb.gravity_scale
         )
         rb.translation = tuple(position.tolist())
         rb.rotation = tuple(quaternion.tolist())

@@ -61,10 +61,16 @@ def table_drafts(draft: float, height: float, rows: int) -> np.ndarray:
     return np.linspace(0.2 * draft, top, rows)
 
 
-def hull_height(mesh: Mesh, up: Sequence[float]) -> float:
-    """The extent of the mesh along ``up``, m."""
+def table_height(mesh: Mesh, up: Sequence[float]) -> float:
+    """The greatest draft of the table upright, m: the extent of the mesh along ``up``, or, for
+    a hull whose openings were closed by lids, just below its lowest opening (the hull floods
+    there)."""
     heights = mesh.vertices @ np.asarray(up, dtype=float)
-    return float(heights.max() - heights.min())
+    keel = float(heights.min())
+    top = float(heights.max()) - keel
+    for rim in mesh.openings:
+        top = min(top, (1.0 - 1e-9) * (float(heights[rim].min()) - keel))
+    return top
 
 
 def print_equilibrium(rest: Equilibrium, mass: float, cog: Sequence[float]) -> None:
@@ -197,8 +203,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         heels = np.arange(0.0, args.heel_max + 1e-9, args.heel_step)
         trim = {"free_trim": False, "trim_deg": rest.trim} if args.fixed_trim else {}
         curve = mesh.gz_curve(args.mass, args.cog, heels, axis=axis, water=water, **trim)
-        drafts = table_drafts(rest.draft, hull_height(mesh, up), args.rows)
-        table = mesh.hydrostatic_table(drafts, water=water, longitudinal_axis=axis, center_of_gravity=args.cog)
+        drafts = table_drafts(rest.draft, table_height(mesh, up), args.rows)
+        table = mesh.hydrostatic_table(drafts, water=water, axis=axis, center_of_mass=args.cog)
     except (OSError, ValueError, RuntimeError) as error:
         print(f"error: {error}", file=sys.stderr)
         return 2

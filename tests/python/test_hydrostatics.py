@@ -82,14 +82,14 @@ def test_a_dry_body_has_no_waterplane() -> None:
 @pytest.mark.parametrize(
     ("kwargs", "match"),
     [
-        ({"center_of_gravity": (0, np.nan, 0)}, "^center_of_gravity"),
-        ({"center_of_gravity": (0, 0, 0), "mass": -1.0}, "^mass"),
-        ({"center_of_gravity": (0, 0, 0), "mass": math.inf}, "^mass"),
-        ({"center_of_gravity": (0, 0, 0), "longitudinal_axis": (0, 1, 0)}, "^longitudinal_axis"),
-        ({"center_of_gravity": (0, 0, 0), "longitudinal_axis": (0, 0, 0)}, "^longitudinal_axis"),
-        ({"center_of_gravity": (0, 0)}, "^center_of_gravity"),
+        ({"center_of_mass": (0, np.nan, 0)}, "^center_of_mass"),
+        ({"center_of_mass": (0, 0, 0), "mass": -1.0}, "^mass"),
+        ({"center_of_mass": (0, 0, 0), "mass": math.inf}, "^mass"),
+        ({"center_of_mass": (0, 0, 0), "axis": (0, 1, 0)}, "^axis"),
+        ({"center_of_mass": (0, 0, 0), "axis": (0, 0, 0)}, "^axis"),
+        ({"center_of_mass": (0, 0)}, "^center_of_mass"),
         (
-            {"center_of_gravity": (0, 0, 0), "water": buoyancy.Water(waves=buoyancy.AiryWave(0.1, 10.0))},
+            {"center_of_mass": (0, 0, 0), "water": buoyancy.Water(waves=buoyancy.AiryWave(0.1, 10.0))},
             "^water",
         ),
     ],

@@ -99,7 +99,7 @@ def test_fixed_trim_is_held() -> None:
 
 def test_table_of_a_box() -> None:
     drafts = [0.1, 0.25, 0.5, 0.9]
-    table = box().hydrostatic_table(drafts, center_of_gravity=(0, -0.1, 0))
+    table = box().hydrostatic_table(drafts, center_of_mass=(0, -0.1, 0))
     assert len(table) == 4
     d = np.array(drafts)
     np.testing.assert_allclose(table.draft, d, rtol=1e-12)

@@ -694,6 +694,8 @@ impl PyController {
     ///     Its center of mass now, world frame, m.
     /// mass : float
     ///     Kg, positive.
+    /// gravity_scale : float
+    ///     The factor of gravity on the body (default 1): it weighs ``mass * gravity_scale``.
     ///
     /// Returns
     /// -------
@@ -701,8 +703,11 @@ impl PyController {
     ///     The body's position (3,) and quaternion (4,) at rest, and the equilibrium (draft,
     ///     heel, trim, GM, ...). ``IndexError`` for no such body, ``ValueError`` for a body
     ///     that does not float, ``RuntimeError`` if the solver does not converge.
-    #[pyo3(text_signature = "(self, index, position, quaternion, center_of_mass, mass)")]
-    #[allow(clippy::type_complexity)]
+    #[pyo3(
+        signature = (index, position, quaternion, center_of_mass, mass, gravity_scale=None),
+        text_signature = "(self, index, position, quaternion, center_of_mass, mass, gravity_scale=1.0)"
+    )]
+    #[allow(clippy::type_complexity, clippy::too_many_arguments)]
     fn rest<'py>(
         &self,
         py: Python<'py>,
@@ -711,6 +716,7 @@ impl PyController {
         quaternion: &Bound<'_, PyAny>,
         center_of_mass: &Bound<'_, PyAny>,
         mass: &Bound<'_, PyAny>,
+        gravity_scale: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<(
         Bound<'py, PyArray1<f64>>,
         Bound<'py, PyArray1<f64>>,
@@ -730,7 +736,7 @@ impl PyController {
             mass,
             inverse_mass: Vector3::zeros(),
             inverse_inertia: Default::default(),
-            gravity_scale: 1.0,
+            gravity_scale: convert::real_or(gravity_scale, "gravity_scale", 1.0)?,
             applied_force: Vector3::zeros(),
             applied_torque: Vector3::zeros(),
             motion: Default::default(),

@@ -3,7 +3,7 @@
 
 use buoyancy_core::hydrostatics::{Hydrostatics, LoadingCondition, Waterplane};
 use buoyancy_core::nalgebra::{Point3, Unit, Vector3};
-use buoyancy_core::{Pose, Water};
+use buoyancy_core::{Error, Pose, Water};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::prelude::*;
@@ -39,20 +39,36 @@ pub fn still_water(waves: Option<&WaterWaves>) -> PyResult<()> {
     }
 }
 
+/// The Python exception for a loading condition's error: a `ValueError` naming the Python
+/// argument (`center_of_mass`, `axis`, `mass`, ...).
+pub fn loading_error(e: Error) -> PyErr {
+    match e {
+        Error::InvalidLoading { parameter, reason } => arg_error(
+            match parameter {
+                "center_of_gravity" => "center_of_mass",
+                "longitudinal_axis" => "axis",
+                other => other,
+            },
+            reason,
+        ),
+        e => to_py(e, None),
+    }
+}
+
 /// The loading condition of the keyword arguments (mesh frame).
 pub fn loading(
-    center_of_gravity: &Bound<'_, PyAny>,
+    center_of_mass: &Bound<'_, PyAny>,
     mass: Option<&Bound<'_, PyAny>>,
     reference_point: Option<&Bound<'_, PyAny>>,
-    longitudinal_axis: Option<&Bound<'_, PyAny>>,
+    axis: Option<&Bound<'_, PyAny>>,
     keel: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<LoadingCondition<f64>> {
     let point = |obj: &Bound<'_, PyAny>, name: &str| -> PyResult<Point3<f64>> {
         Ok(Point3::from(convert::vector3(obj, name)?))
     };
-    let core = |e| to_py(e, None);
+    let core = loading_error;
     let mut loading =
-        LoadingCondition::new(point(center_of_gravity, "center_of_gravity")?).map_err(core)?;
+        LoadingCondition::new(point(center_of_mass, "center_of_mass")?).map_err(core)?;
     if let Some(m) = given(mass) {
         loading = loading.with_mass(convert::real(m, "mass")?).map_err(core)?;
     }
@@ -61,9 +77,9 @@ pub fn loading(
             .with_reference_point(point(p, "reference_point")?)
             .map_err(core)?;
     }
-    if let Some(a) = given(longitudinal_axis) {
+    if let Some(a) = given(axis) {
         loading = loading
-            .with_longitudinal_axis(convert::vector3(a, "longitudinal_axis")?)
+            .with_longitudinal_axis(convert::vector3(a, "axis")?)
             .map_err(core)?;
     }
     if let Some(k) = given(keel) {
@@ -96,7 +112,7 @@ pub fn hydrostatics(
     let mesh = mesh.core();
     py.detach(|| mesh.hydrostatics(pose, water, loading))
         .map(|inner| PyHydrostatics { inner })
-        .map_err(|e| to_py(e, None))
+        .map_err(loading_error)
 }
 
 /// The waterplane of a body at a pose: the section of the still water plane through the body,
@@ -203,7 +219,7 @@ impl PyWaterplane {
 /// Examples
 /// --------
 /// >>> box = buoyancy.shapes.cube().scaled((4.0, 1.0, 2.0))   # draft 0.5 m, beam 2 m
-/// >>> h = box.hydrostatics(center_of_gravity=(0, 0, 0))
+/// >>> h = box.hydrostatics(center_of_mass=(0, 0, 0))
 /// >>> round(h.kb, 12), round(h.bm_transverse, 12), round(h.gm_transverse, 12)
 /// (0.25, 0.666666666667, 0.416666666667)
 #[pyclass(frozen, module = "buoyancy", name = "Hydrostatics")]

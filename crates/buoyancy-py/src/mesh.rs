@@ -805,8 +805,8 @@ impl PyMesh {
     ///
     /// Parameters
     /// ----------
-    /// center_of_gravity : array_like, shape (3,)
-    ///     ``G``, mesh frame, m.
+    /// center_of_mass : array_like, shape (3,)
+    ///     ``G``, the center of mass (of gravity), mesh frame, m.
     /// position, rotation :
     ///     The pose, as in :meth:`buoyancy`.
     /// water : Water, optional
@@ -816,7 +816,7 @@ impl PyMesh {
     ///     freely there).
     /// reference_point : array_like, shape (3,), optional
     ///     The point the stiffness is taken about, mesh frame; default ``G``.
-    /// longitudinal_axis : array_like, shape (3,), optional
+    /// axis : array_like, shape (3,), optional
     ///     The body's fore-and-aft axis, mesh frame, default ``(1, 0, 0)``: roll is about it.
     /// keel : array_like, shape (3,), optional
     ///     The point heights (``KB``, ``KG``) are measured from, mesh frame; default the lowest
@@ -831,36 +831,30 @@ impl PyMesh {
     /// A box 4 m long (x), 1 m deep (y, up), 2 m wide, floating at half its depth:
     ///
     /// >>> box = buoyancy.shapes.cube().scaled((4.0, 1.0, 2.0))
-    /// >>> h = box.hydrostatics(center_of_gravity=(0, 0, 0))
+    /// >>> h = box.hydrostatics(center_of_mass=(0, 0, 0))
     /// >>> round(h.bm_transverse, 12) == round(2.0**2 / (12 * 0.5), 12)
     /// True
     #[pyo3(
-        signature = (center_of_gravity, position=None, rotation=None, water=None, mass=None, reference_point=None, longitudinal_axis=None, keel=None),
-        text_signature = "(self, center_of_gravity, position=(0, 0, 0), rotation=None, water=None, mass=None, reference_point=None, longitudinal_axis=(1, 0, 0), keel=None)"
+        signature = (center_of_mass, position=None, rotation=None, water=None, mass=None, reference_point=None, axis=None, keel=None),
+        text_signature = "(self, center_of_mass, position=(0, 0, 0), rotation=None, water=None, mass=None, reference_point=None, axis=(1, 0, 0), keel=None)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn hydrostatics(
         &self,
         py: Python<'_>,
-        center_of_gravity: &Bound<'_, PyAny>,
+        center_of_mass: &Bound<'_, PyAny>,
         position: Option<&Bound<'_, PyAny>>,
         rotation: Option<&Bound<'_, PyAny>>,
         water: Option<&Bound<'_, PyAny>>,
         mass: Option<&Bound<'_, PyAny>>,
         reference_point: Option<&Bound<'_, PyAny>>,
-        longitudinal_axis: Option<&Bound<'_, PyAny>>,
+        axis: Option<&Bound<'_, PyAny>>,
         keel: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyHydrostatics> {
         let (water, waves) = PyMesh::water(water)?;
         hydrostatics::still_water(waves)?;
         let pose = PyMesh::pose(position, rotation)?;
-        let loading = hydrostatics::loading(
-            center_of_gravity,
-            mass,
-            reference_point,
-            longitudinal_axis,
-            keel,
-        )?;
+        let loading = hydrostatics::loading(center_of_mass, mass, reference_point, axis, keel)?;
         hydrostatics::hydrostatics(py, self, &pose, &water, &loading)
     }
 
@@ -871,35 +865,35 @@ impl PyMesh {
     /// Examples
     /// --------
     /// >>> box = buoyancy.shapes.cube().scaled((4.0, 1.0, 2.0))
-    /// >>> c = box.stiffness(center_of_gravity=(0, 0, 0))
+    /// >>> c = box.stiffness(center_of_mass=(0, 0, 0))
     /// >>> round(float(c[0, 0]) / (1000 * 9.81 * 8.0), 12)   # rho g A_wp
     /// 1.0
     #[pyo3(
-        signature = (center_of_gravity, position=None, rotation=None, water=None, mass=None, reference_point=None, longitudinal_axis=None, keel=None),
-        text_signature = "(self, center_of_gravity, position=(0, 0, 0), rotation=None, water=None, mass=None, reference_point=None, longitudinal_axis=(1, 0, 0), keel=None)"
+        signature = (center_of_mass, position=None, rotation=None, water=None, mass=None, reference_point=None, axis=None, keel=None),
+        text_signature = "(self, center_of_mass, position=(0, 0, 0), rotation=None, water=None, mass=None, reference_point=None, axis=(1, 0, 0), keel=None)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn stiffness<'py>(
         &self,
         py: Python<'py>,
-        center_of_gravity: &Bound<'_, PyAny>,
+        center_of_mass: &Bound<'_, PyAny>,
         position: Option<&Bound<'_, PyAny>>,
         rotation: Option<&Bound<'_, PyAny>>,
         water: Option<&Bound<'_, PyAny>>,
         mass: Option<&Bound<'_, PyAny>>,
         reference_point: Option<&Bound<'_, PyAny>>,
-        longitudinal_axis: Option<&Bound<'_, PyAny>>,
+        axis: Option<&Bound<'_, PyAny>>,
         keel: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let h = self.hydrostatics(
             py,
-            center_of_gravity,
+            center_of_mass,
             position,
             rotation,
             water,
             mass,
             reference_point,
-            longitudinal_axis,
+            axis,
             keel,
         )?;
         Ok(h.stiffness_array(py))
@@ -1054,10 +1048,10 @@ impl PyMesh {
     ///     Still water; default ``Water()``.
     /// rotation : array_like, optional
     ///     The upright orientation, default the mesh frame's own.
-    /// longitudinal_axis : array_like, shape (3,), optional
+    /// axis : array_like, shape (3,), optional
     ///     Mesh frame, default ``(1, 0, 0)``: ``lcb``, ``lcf`` are along it, ``bm_transverse``
     ///     is about it.
-    /// center_of_gravity : array_like, shape (3,), optional
+    /// center_of_mass : array_like, shape (3,), optional
     ///     Mesh frame: the moment to change trim takes ``GM_L = KB + BM_L - KG`` with it, else
     ///     ``BM_L``.
     /// length : float, optional
@@ -1074,8 +1068,8 @@ impl PyMesh {
     /// >>> table.waterplane_area.round(2).tolist()      # 2/3 L B = 1.6 m² at the design draft
     /// [1.02, 1.6]
     #[pyo3(
-        signature = (drafts, water=None, rotation=None, longitudinal_axis=None, center_of_gravity=None, length=None),
-        text_signature = "(self, drafts, water=None, rotation=None, longitudinal_axis=(1, 0, 0), center_of_gravity=None, length=None)"
+        signature = (drafts, water=None, rotation=None, axis=None, center_of_mass=None, length=None),
+        text_signature = "(self, drafts, water=None, rotation=None, axis=(1, 0, 0), center_of_mass=None, length=None)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn hydrostatic_table(
@@ -1084,14 +1078,13 @@ impl PyMesh {
         drafts: &Bound<'_, PyAny>,
         water: Option<&Bound<'_, PyAny>>,
         rotation: Option<&Bound<'_, PyAny>>,
-        longitudinal_axis: Option<&Bound<'_, PyAny>>,
-        center_of_gravity: Option<&Bound<'_, PyAny>>,
+        axis: Option<&Bound<'_, PyAny>>,
+        center_of_mass: Option<&Bound<'_, PyAny>>,
         length: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyHydrostaticTable> {
         let (water, waves) = PyMesh::water(water)?;
         hydrostatics::still_water(waves)?;
-        let options =
-            stability::table_options(rotation, longitudinal_axis, center_of_gravity, length)?;
+        let options = stability::table_options(rotation, axis, center_of_mass, length)?;
         stability::hydrostatic_table(py, self, &water, drafts, &options)
     }
 

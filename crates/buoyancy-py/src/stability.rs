@@ -61,13 +61,16 @@ fn numbers(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<f64>> {
 pub fn rest_error(e: Error) -> PyErr {
     match e {
         Error::InvalidLoading { parameter, reason } => arg_error(
-            if parameter == "mass" {
-                "mass"
-            } else {
+            if parameter == "center_of_gravity" {
                 "center_of_mass"
+            } else {
+                parameter
             },
             reason,
         ),
+        Error::InvalidMass { reason } if reason.contains("gravity scale") => {
+            arg_error("gravity_scale", reason)
+        }
         e => solver_error(e, &[]),
     }
 }
@@ -194,11 +197,14 @@ pub fn gz_curve(
 /// The table options of the keyword arguments.
 pub fn table_options(
     rotation: Option<&Bound<'_, PyAny>>,
-    longitudinal_axis: Option<&Bound<'_, PyAny>>,
-    center_of_gravity: Option<&Bound<'_, PyAny>>,
+    axis: Option<&Bound<'_, PyAny>>,
+    center_of_mass: Option<&Bound<'_, PyAny>>,
     length: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<TableOptions<f64>> {
-    let names = [("longitudinal_axis", "longitudinal_axis")];
+    let names = [
+        ("longitudinal_axis", "axis"),
+        ("center_of_gravity", "center_of_mass"),
+    ];
     let err = |e| solver_error(e, &names);
     let mut options = TableOptions::new();
     if let Some(r) = given(rotation) {
@@ -206,14 +212,14 @@ pub fn table_options(
             .with_rotation(convert::rotation(r, "rotation")?)
             .map_err(err)?;
     }
-    if let Some(a) = given(longitudinal_axis) {
+    if let Some(a) = given(axis) {
         options = options
-            .with_longitudinal_axis(convert::vector3(a, "longitudinal_axis")?)
+            .with_longitudinal_axis(convert::vector3(a, "axis")?)
             .map_err(err)?;
     }
-    if let Some(p) = given(center_of_gravity) {
+    if let Some(p) = given(center_of_mass) {
         options = options
-            .with_center_of_gravity(Point3::from(convert::vector3(p, "center_of_gravity")?))
+            .with_center_of_gravity(Point3::from(convert::vector3(p, "center_of_mass")?))
             .map_err(err)?;
     }
     if let Some(l) = given(length) {

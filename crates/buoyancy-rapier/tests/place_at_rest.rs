@@ -46,8 +46,10 @@ fn a_body_placed_at_rest_stays_there() {
         .unwrap();
     let e = &rest.equilibrium;
     assert!(e.stable, "{e:?}");
-    assert!(e.heel.abs() > 0.01 && e.trim.abs() > 0.01, "{e:?}");
     let (com, up) = attitude(pool.body(h));
+    // The load off center tilts it at rest (its up axis about 3° from the vertical).
+    let tilt = up.angle_between(Vector::Y).to_degrees();
+    assert!(tilt > 1.0 && tilt < 10.0, "tilted {tilt}° at rest");
     pool.run(5.0);
     let (com_after, up_after) = attitude(pool.body(h));
     let moved = (com_after - com).length();
@@ -77,8 +79,8 @@ fn the_rest_is_where_a_dropped_body_settles() {
     let height = (com.y - com_rest.y).abs();
     let turned = up.angle_between(up_rest).to_degrees();
     eprintln!("dropped: settled {height:.2e} m and {turned:.2e}° from the rest");
-    assert!(height < 5e-3, "settled {height} m from the rest height");
-    assert!(turned < 0.5, "settled {turned}° from the rest attitude");
+    assert!(height < 1e-4, "settled {height} m from the rest height");
+    assert!(turned < 0.3, "settled {turned}° from the rest attitude");
 }
 
 #[test]

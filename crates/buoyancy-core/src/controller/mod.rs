@@ -61,7 +61,7 @@
 //! The pressure drag is integrated over every wetted triangle, which for a mesh of thousands of
 //! triangles costs many times its buoyancy. By default ([`DampingResolution::DEFAULT`]) the
 //! controller integrates it over a reduced copy of each mesh of more than 384 triangles
-//! ([`ReducedMesh`](crate::reduced_mesh::ReducedMesh): vertex clustering, scaled to the mesh's
+//! ([`ReducedMesh`]: vertex clustering, scaled to the mesh's
 //! volume), built once per mesh when a body is added and shared by the bodies of the same
 //! mesh; smaller meshes are taken whole, unchanged. [`Controller::set_damping_resolution`]
 //! and [`Controller::set_body_damping_resolution`] choose otherwise

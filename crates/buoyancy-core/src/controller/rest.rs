@@ -4,7 +4,7 @@
 use alloc::borrow::Cow;
 use alloc::vec::Vec;
 
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector3};
 
 use super::{BodyState, Controller, Part};
 use crate::hydrostatics::{Equilibrium, EquilibriumOptions, LoadingCondition};
@@ -44,8 +44,9 @@ fn body_mesh(parts: &[Part]) -> Result<(Cow<'_, Mesh<f64>>, Pose<f64>), Error> {
 
 impl Controller {
     /// Where body `index` comes to rest in the still water of its settings (with waves, the
-    /// still level under them), given its mass and center of mass in `state` (the engine's, at
-    /// its current pose): the body pose at which the water it displaces weighs what it weighs
+    /// still level under them), given its mass, gravity scale and center of mass in `state`
+    /// (the engine's, at its current pose): the body pose at which the water it displaces
+    /// weighs what it weighs (`m·s`, `s` the gravity scale)
     /// and its center of buoyancy lies on the vertical through its center of mass, the stable
     /// attitude (see [`Mesh::equilibrium_with`]). Heel and trim are measured from the current
     /// orientation, whose yaw and horizontal position of the center of mass are kept. `None`
@@ -58,7 +59,8 @@ impl Controller {
     ///
     /// # Errors
     /// As [`Mesh::equilibrium_with`]: [`Error::TooHeavyToFloat`] for a body that sinks,
-    /// [`Error::InvalidMass`] for a zero mass, [`Error::NoConvergence`]; and
+    /// [`Error::InvalidMass`] for a zero mass or a gravity scale that is not positive and
+    /// finite, [`Error::NoConvergence`]; and
     /// [`Error::InvalidLoading`] for a mass or center of mass that is negative or not finite,
     /// [`Error::InvalidPose`] for a pose that is not finite; [`Error::InvalidMesh`] when the
     /// parts of a body of several cannot be merged into one closed mesh (they touch along an
@@ -67,10 +69,28 @@ impl Controller {
         let body = self.bodies.get(index)?;
         Some((|| {
             let water = self.settings.resolve(&body.options).water;
+            // The engine weighs the body at m·g·s (s its gravity scale), as the step does.
+            let scale = state.gravity_scale;
+            if !(scale.is_finite() && scale > 0.0) {
+                return Err(Error::InvalidMass {
+                    reason: "the body's gravity scale is not positive and finite: it does not \
+                             sink to a rest",
+                });
+            }
             let (mesh, shape_to_body) = body_mesh(&body.parts)?;
             let world_to_shape = (state.pose * shape_to_body).inverse();
             let center: Point3<f64> = world_to_shape * state.center_of_mass;
-            let loading = LoadingCondition::new(center)?.with_mass(state.mass)?;
+            // Heel about the mesh's x axis, or its z axis when x is within 30° of the vertical
+            // (as the waterplane's axes are chosen): any horizontal axis finds the same rest.
+            let up = world_to_shape.rotation * water.normal().into_inner();
+            let axis = if up.x.abs() > 0.866 {
+                Vector3::z()
+            } else {
+                Vector3::x()
+            };
+            let loading = LoadingCondition::new(center)?
+                .with_mass(state.mass * scale)?
+                .with_longitudinal_axis(axis)?;
             let options = EquilibriumOptions::default().with_start(state.pose * shape_to_body);
             let equilibrium = mesh.equilibrium_with(&water, &loading, &options)?;
             Ok(Rest {
@@ -187,5 +207,47 @@ mod tests {
             Some(Err(Error::TooHeavyToFloat { .. }))
         ));
         assert!(controller.rest(7, &sinks).is_none());
+    }
+
+    /// The weight is the engine's, `m·g·s`; a body whose mesh x axis is vertical rests too.
+    #[test]
+    fn the_gravity_scale_weighs_and_any_orientation_rests() {
+        let mut controller = Controller::default();
+        let index = controller
+            .add(
+                vec![Part {
+                    mesh: block(),
+                    shape_to_body: Pose::identity(),
+                }],
+                BodyOptions::default(),
+            )
+            .unwrap();
+        // 1600 kg at half gravity weighs what 800 kg does: 0.1 m deep (4 × 2 m waterplane).
+        let pose = Pose::translation(0.0, 2.0, 0.0);
+        let mut halved = state(pose, pose * Point3::origin(), 1600.0);
+        halved.gravity_scale = 0.5;
+        let rest = controller.rest(index, &halved).unwrap().unwrap();
+        assert!(
+            (rest.equilibrium.draft - 0.1).abs() < 1e-9,
+            "{}",
+            rest.equilibrium.draft
+        );
+        halved.gravity_scale = 0.0;
+        assert!(matches!(
+            controller.rest(index, &halved),
+            Some(Err(Error::InvalidMass { .. }))
+        ));
+        // Stood on its end (mesh x up): it falls flat, the stable rest of a long box.
+        let standing = Pose::from_parts(
+            Translation3::new(0.0, 3.0, 0.0),
+            UnitQuaternion::from_euler_angles(0.0, 0.0, core::f64::consts::FRAC_PI_2),
+        );
+        let rest = controller
+            .rest(index, &state(standing, standing * Point3::origin(), 800.0))
+            .unwrap()
+            .unwrap();
+        assert!(rest.equilibrium.stable);
+        let long_axis = rest.pose.rotation * Vector3::x();
+        assert!(long_axis.y.abs() < 1e-6, "{long_axis}");
     }
 }
