@@ -94,8 +94,7 @@ class Sea:
         full = self.water()
 
         def elevation(points: np.ndarray, t: float) -> np.ndarray:
-            x = min(max(t / RAMP, 0.0), 1.0)
-            return (x * x * (3.0 - 2.0 * x)) * full.elevation(points, t)
+            return ramp(t) * full.elevation(points, t)
 
         return buoyancy.Water(waves=elevation)
 
@@ -105,9 +104,14 @@ class Sea:
         dx = 0.02
         p = np.array([[point[0], 0.0, point[2]], [point[0] - dx, 0.0, point[2]], [point[0] + dx, 0.0, point[2]]])
         eta = self.water().elevation(p, t)
-        factor = min(max(t / RAMP, 0.0), 1.0)
-        factor = factor * factor * (3.0 - 2.0 * factor)
+        factor = ramp(t)
         return factor * float(eta[0]), math.degrees(math.atan(factor * (eta[2] - eta[1]) / (2 * dx)))
+
+
+def ramp(t: float) -> float:
+    """The waves' height factor at time ``t``: a smooth step from 0 at t = 0 to 1 at t = RAMP."""
+    x = min(max(t / RAMP, 0.0), 1.0)
+    return x * x * (3.0 - 2.0 * x)
 
 
 def seas() -> list[Sea]:
@@ -168,16 +172,13 @@ def add_hull(world: Any, water: FloatingBodies, z: float, mesh: buoyancy.Mesh, d
 
 
 def add_half_density(world: Any, water: FloatingBodies, z: float, mesh: buoyancy.Mesh) -> Any:
-    """``mesh`` half as dense as water at ``z``, at the height where it displaces its weight."""
-    lo, hi = -mesh.bounding_radius, mesh.bounding_radius
-    for _ in range(40):
-        y = 0.5 * (lo + hi)
-        lo, hi = (y, hi) if mesh.buoyancy((0.0, y, 0.0)).volume > 0.5 * mesh.volume else (lo, y)
+    """``mesh`` half as dense as water at ``z``, placed at rest (its equilibrium in still water)."""
     handle = world.add_body(
-        rapier3d.RigidBody.dynamic().translation((0.0, 0.5 * (lo + hi), z)).can_sleep(False),
+        rapier3d.RigidBody.dynamic().translation((0.0, 0.0, z)).can_sleep(False),
         [trimesh(mesh).density(0.5 * WATER_DENSITY)],
     )
     water.register(handle, mesh)
+    water.place_at_rest(handle, world.rigid_bodies, world.colliders)
     return handle
 
 

@@ -21,7 +21,7 @@
 //! triangles on the same three representatives with opposite windings (a sheet folded onto
 //! itself) cancel. The result is a triangle soup, not necessarily a closed manifold: the drag
 //! does not need one. The largest resolution whose result has at most the requested number of
-//! triangles is kept (found by bisection over `r` in `[2, 1024]`).
+//! triangles is kept (found by bisection over `r` in `[2, 1024)`).
 //!
 //! A reduction that loses too much of the surface (its area or volume more than 10 % off the
 //! mesh's, a flat or very thin mesh at a coarse resolution) is refused: the full mesh is used.
@@ -138,7 +138,8 @@ impl<T: Real> ReducedMesh<T> {
         self.triangles.len()
     }
 
-    /// Number of vertices (every one is used).
+    /// Number of vertices (the cells' representatives; a vertex of vanished triangles only is
+    /// kept, unused).
     pub fn vertex_count(&self) -> usize {
         self.vertices.len()
     }

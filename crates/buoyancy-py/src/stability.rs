@@ -271,7 +271,9 @@ pub fn hydrostatic_table(
 /// iterations, restarts : int
 ///     Newton iterations, and restarts from an unstable state.
 /// stable : bool
-///     Whether every eigenvalue of the heave-roll-pitch stiffness is positive.
+///     Whether every eigenvalue of the heave-roll-pitch stiffness (scaled as
+///     ``stiffness_eigenvalues``) exceeds the square root of the tolerance, 6.1e-6 by default:
+///     ``False`` for a neutral state (a uniform cylinder rolling about its axis).
 /// stiffness_eigenvalues : ndarray, shape (3,)
 ///     Those eigenvalues, scaled to be dimensionless (a tilt's is ``GM / L``), least first.
 /// hydrostatics : Hydrostatics

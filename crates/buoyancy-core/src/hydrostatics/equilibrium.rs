@@ -98,8 +98,10 @@ pub struct Equilibrium<T: Real> {
     pub restarts: usize,
     /// Whether the equilibrium is stable: every eigenvalue of the heave–roll–pitch stiffness
     /// about `G` (scaled, see [`stiffness_eigenvalues`](Self::stiffness_eigenvalues)) above
-    /// `√tolerance`. `false` only for a neutral state (an eigenvalue within `±√tolerance`, e.g.
-    /// a uniform cylinder rolling about its axis) or when the restarts ran out.
+    /// `√tolerance` (6.1e-6 for the default `f64` tolerance, 4.9e-3 for `f32`'s: a tilt's
+    /// eigenvalue is `GM/L`). `false` for a neutral state (an eigenvalue within `±√tolerance`,
+    /// e.g. a uniform cylinder rolling about its axis), when the restarts ran out, or when no
+    /// step along the direction of negative curvature lowered the potential.
     pub stable: bool,
     /// Eigenvalues of `S·C·S/(m·g·L)`, least first, dimensionless: `C` the stiffness about `G`
     /// in heave, roll about `e₁` and pitch about `e₂` (the Hessian of the potential),
