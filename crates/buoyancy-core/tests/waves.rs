@@ -197,27 +197,29 @@ fn a_wall_sided_box_wetted_area_in_a_regular_wave() {
 #[test]
 fn froude_krylov_wets_the_hydrostatic_surface() {
     let water = Water::default();
-    let sea = AiryWaves::new(
-        vec![
-            AiryComponent {
-                amplitude: 0.2,
-                wavelength: 4.0,
-                direction: Vector3::x(),
-                phase: 0.3,
-            },
-            AiryComponent {
-                amplitude: 0.05,
-                wavelength: 1.5,
-                direction: Vector3::new(0.3, 0.0, 1.0),
-                phase: 1.1,
-            },
-        ],
-        Some(6.0),
-    )
-    .unwrap();
     let calm = wave_along_x(0.0, 4.0, 0.0, None);
     for (name, mesh) in all_meshes() {
         let r = mesh.bounding_radius();
+        // A sea the size of the body (a radius-1 body: waves 0.4 m and 0.1 m high, 4 m and
+        // 1.5 m long), so that the poses below cut every body whatever its scale.
+        let sea = AiryWaves::new(
+            vec![
+                AiryComponent {
+                    amplitude: 0.2 * r,
+                    wavelength: 4.0 * r,
+                    direction: Vector3::x(),
+                    phase: 0.3,
+                },
+                AiryComponent {
+                    amplitude: 0.05 * r,
+                    wavelength: 1.5 * r,
+                    direction: Vector3::new(0.3, 0.0, 1.0),
+                    phase: 1.1,
+                },
+            ],
+            Some(6.0 * r),
+        )
+        .unwrap();
         let area = mesh.surface_area();
         let mut wetted = 0;
         for k in 0..9 {
