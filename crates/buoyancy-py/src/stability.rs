@@ -16,13 +16,13 @@ use crate::arrays;
 use crate::convert::{self, given};
 use crate::errors::{arg_error, to_py};
 use crate::format::g;
-use crate::hydrostatics::PyHydrostatics;
+use crate::hydrostatics::{self, PyHydrostatics};
 use crate::mesh::PyMesh;
 
 /// The Python exception for a core error of the solvers: a solver option or table option names
-/// the Python argument (`python_names` maps the core's parameter names to the Python ones); no
-/// convergence is a `RuntimeError` (nothing is wrong with the arguments); the rest as
-/// [`to_py`].
+/// the Python argument (`python_names` maps the core's parameter names to the Python ones), a
+/// loading condition's error as [`hydrostatics::loading_error`]; no convergence is a
+/// `RuntimeError` (nothing is wrong with the arguments); the rest as [`to_py`].
 fn solver_error(e: Error, python_names: &[(&str, &str)]) -> PyErr {
     let rename = |parameter: &'static str| {
         python_names
@@ -33,8 +33,8 @@ fn solver_error(e: Error, python_names: &[(&str, &str)]) -> PyErr {
     };
     match e {
         Error::InvalidSolverOption { parameter, reason }
-        | Error::InvalidTableOption { parameter, reason }
-        | Error::InvalidLoading { parameter, reason } => arg_error(&rename(parameter), reason),
+        | Error::InvalidTableOption { parameter, reason } => arg_error(&rename(parameter), reason),
+        Error::InvalidLoading { .. } => hydrostatics::loading_error(e),
         Error::InvalidMass { reason } => arg_error("mass", reason),
         Error::InvalidDraft { index, .. } => arg_error(&format!("drafts[{index}]"), e),
         Error::NoConvergence { .. } => PyRuntimeError::new_err(e.to_string()),
@@ -57,17 +57,10 @@ fn numbers(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<f64>> {
     Ok(floats.values)
 }
 
-/// The Python exception for an error of `Controller::rest`: a mass out of range names `mass`.
+/// The Python exception for an error of `Controller::rest`: a gravity scale out of range names
+/// `gravity_scale`.
 pub fn rest_error(e: Error) -> PyErr {
     match e {
-        Error::InvalidLoading { parameter, reason } => arg_error(
-            if parameter == "center_of_gravity" {
-                "center_of_mass"
-            } else {
-                parameter
-            },
-            reason,
-        ),
         Error::InvalidMass { reason } if reason.contains("gravity scale") => {
             arg_error("gravity_scale", reason)
         }
@@ -101,36 +94,15 @@ pub fn options(
     Ok(options)
 }
 
-/// The loading condition of a floating body: its mass, center of mass and axes (mesh frame).
+/// The loading condition of a floating body: its mass, center of mass and axes (mesh frame),
+/// the mass required.
 pub fn loading(
     mass: &Bound<'_, PyAny>,
     center_of_mass: &Bound<'_, PyAny>,
-    longitudinal_axis: Option<&Bound<'_, PyAny>>,
+    axis: Option<&Bound<'_, PyAny>>,
     keel: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<LoadingCondition<f64>> {
-    let core = |e| to_py(e, None);
-    let center = Point3::from(convert::vector3(center_of_mass, "center_of_mass")?);
-    let mut loading = LoadingCondition::new(center)
-        .map_err(|_| arg_error("center_of_mass", "has a NaN or infinite component"))?
-        .with_mass(convert::real(mass, "mass")?)
-        .map_err(|e| match e {
-            Error::InvalidLoading { reason, .. } => arg_error("mass", reason),
-            e => core(e),
-        })?;
-    if let Some(a) = given(longitudinal_axis) {
-        loading = loading
-            .with_longitudinal_axis(convert::vector3(a, "axis")?)
-            .map_err(|e| match e {
-                Error::InvalidLoading { reason, .. } => arg_error("axis", reason),
-                e => core(e),
-            })?;
-    }
-    if let Some(k) = given(keel) {
-        loading = loading
-            .with_keel(Point3::from(convert::vector3(k, "keel")?))
-            .map_err(core)?;
-    }
-    Ok(loading)
+    hydrostatics::loading(center_of_mass, Some(mass), None, axis, keel)
 }
 
 /// `(x, y, z, w)`, scipy's order, as the pose arguments take it.
@@ -149,7 +121,7 @@ pub fn equilibrium(
     let mesh = mesh.core();
     py.detach(|| mesh.equilibrium_with(water, loading, options))
         .map(|inner| PyEquilibrium { inner })
-        .map_err(|e| solver_error(e, &[("longitudinal_axis", "axis")]))
+        .map_err(|e| solver_error(e, &[]))
 }
 
 /// The righting-arm curve of `mesh`, without the interpreter lock; `heels` in degrees.
@@ -182,16 +154,7 @@ pub fn gz_curve(
     let mesh = mesh.core();
     py.detach(|| mesh.gz_curve(water, loading, &heels, trim, options))
         .map(|inner| PyGzCurve { inner })
-        .map_err(|e| {
-            solver_error(
-                e,
-                &[
-                    ("heels", "heel_deg"),
-                    ("trim", "trim_deg"),
-                    ("longitudinal_axis", "axis"),
-                ],
-            )
-        })
+        .map_err(|e| solver_error(e, &[("heels", "heel_deg"), ("trim", "trim_deg")]))
 }
 
 /// The table options of the keyword arguments.

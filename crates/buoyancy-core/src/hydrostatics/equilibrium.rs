@@ -112,6 +112,14 @@ pub struct Equilibrium<T: Real> {
     pub hydrostatics: Hydrostatics<T>,
 }
 
+/// The largest moment residual of the `free` angles of `state` (zero when none is free).
+fn free_moment<T: Real>(state: &State<T>, free: [bool; 2]) -> T {
+    (0..2)
+        .filter(|&k| free[k])
+        .map(|k| state.moment[k].abs())
+        .fold(T::zero(), T::max)
+}
+
 /// One evaluation of the body at an attitude with its draft solved.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct State<T: Real> {
@@ -356,10 +364,7 @@ impl<'a, T: Real> Solver<'a, T> {
 
     /// The largest residual of the free coordinates (the heave always).
     pub(crate) fn residual(&self, state: &State<T>, free: [bool; 2]) -> T {
-        (0..2)
-            .filter(|&k| free[k])
-            .map(|k| state.moment[k].abs())
-            .fold(state.heave.abs(), T::max)
+        state.heave.abs().max(free_moment(state, free))
     }
 
     fn no_convergence(&self, residual: T) -> Error {
@@ -414,10 +419,7 @@ impl<'a, T: Real> Solver<'a, T> {
                 d *= max_step / size;
             }
             let slope = g.dot(&d);
-            let moment_residual = (0..2)
-                .filter(|&k| free[k])
-                .map(|k| state.moment[k].abs())
-                .fold(T::zero(), T::max);
+            let moment_residual = free_moment(&state, free);
             let mut alpha = T::one();
             let mut accepted = None;
             for _ in 0..40 {
@@ -426,10 +428,7 @@ impl<'a, T: Real> Solver<'a, T> {
                     state.trim + d.y * alpha,
                     Some(state.height),
                 )?;
-                let trial_moment = (0..2)
-                    .filter(|&k| free[k])
-                    .map(|k| trial.moment[k].abs())
-                    .fold(T::zero(), T::max);
+                let trial_moment = free_moment(&trial, free);
                 let c = lossy::<T>(1e-4);
                 if trial.potential <= state.potential + c * alpha * slope
                     || trial_moment <= (T::one() - c * alpha) * moment_residual

@@ -7,9 +7,7 @@ use nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
 
 use super::stability::{Hydrostatics, LoadingCondition};
 use super::waterplane::in_plane;
-use crate::clip::{TriangleClass, classify, cut_at_waterline};
 use crate::frame::Frame;
-use crate::hierarchy::Visit;
 use crate::{Error, Mesh, Pose, Real, Water};
 
 /// How [`Mesh::hydrostatic_table`] places the body and what it measures from. Points and axes
@@ -326,40 +324,17 @@ impl<T: Real> Mesh<T> {
     }
 
     /// The extent along `e1` (mesh frame, unit, in the plane) of the waterline at the frame's
-    /// pose: of the points where the plane cuts the triangles near it, and of the vertices
-    /// lying in it (`h = 0`) of the triangles under water, as the waterplane counts them.
+    /// pose: of the ends of its segments, as the waterplane counts them.
     fn waterline_extent(&self, frame: &Frame<T>, e1: &Vector3<T>) -> T {
-        let zero = T::zero();
         let mut range: Option<(T, T)> = None;
         let mut add = |p: &Vector3<T>| {
             let x = p.dot(e1);
             range = Some(range.map_or((x, x), |(lo, hi)| (lo.min(x), hi.max(x))));
         };
-        self.hierarchy
-            .walk(&frame.normal_local, frame.height, |visit| {
-                let Visit::CrossedLeaf { triangles } = visit else {
-                    return;
-                };
-                for i in triangles {
-                    let v = self.corners(i);
-                    let h = frame.heights(&v);
-                    match classify(&h) {
-                        TriangleClass::Cut => {
-                            let cut = cut_at_waterline(v, h);
-                            add(&cut.ab);
-                            add(&cut.ca);
-                        }
-                        TriangleClass::Submerged => {
-                            for k in 0..3 {
-                                if h[k] == zero {
-                                    add(&v[k]);
-                                }
-                            }
-                        }
-                        TriangleClass::Dry => {}
-                    }
-                }
-            });
-        range.map_or(zero, |(lo, hi)| hi - lo)
+        self.waterline_segments(frame, |p, q| {
+            add(p);
+            add(q);
+        });
+        range.map_or(T::zero(), |(lo, hi)| hi - lo)
     }
 }

@@ -212,6 +212,18 @@ impl<T: Real> Mesh<T> {
         // the normal from it: `(p − o)·eₖ = p·eₖ`.
         let plane = |p: &Vector3<T>| Vector2::new(p.dot(e1), p.dot(e2));
         let mut sums = GreenSums::zero();
+        self.waterline_segments(frame, |p, q| sums.add(plane(p), plane(q)));
+        sums
+    }
+
+    /// Calls `segment(p, q)` for each segment `p → q` of the waterline at the frame's pose
+    /// (mesh frame, relative to the centroid), oriented as [`green_sums`](Self::green_sums)
+    /// says: visiting only the leaves the surface crosses.
+    pub(super) fn waterline_segments(
+        &self,
+        frame: &Frame<T>,
+        mut segment: impl FnMut(&Vector3<T>, &Vector3<T>),
+    ) {
         let zero = T::zero();
         self.hierarchy
             .walk(&frame.normal_local, frame.height, |visit| {
@@ -224,11 +236,10 @@ impl<T: Real> Mesh<T> {
                     match classify(&h) {
                         TriangleClass::Cut => {
                             let cut = cut_at_waterline(v, h);
-                            let (ab, ca) = (plane(&cut.ab), plane(&cut.ca));
                             if cut.odd_is_below {
-                                sums.add(ca, ab);
+                                segment(&cut.ca, &cut.ab);
                             } else {
-                                sums.add(ab, ca);
+                                segment(&cut.ab, &cut.ca);
                             }
                         }
                         TriangleClass::Submerged
@@ -237,7 +248,7 @@ impl<T: Real> Mesh<T> {
                             for k in 0..3 {
                                 let j = (k + 1) % 3;
                                 if h[k] == zero && h[j] == zero {
-                                    sums.add(plane(&v[j]), plane(&v[k]));
+                                    segment(&v[j], &v[k]);
                                 }
                             }
                         }
@@ -245,7 +256,6 @@ impl<T: Real> Mesh<T> {
                     }
                 }
             });
-        sums
     }
 }
 
