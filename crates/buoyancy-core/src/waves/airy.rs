@@ -4,7 +4,7 @@ use alloc::vec::Vec;
 
 use nalgebra::{Point3, Vector3};
 
-use super::cosine;
+use super::cosine::{self, CosineTerm};
 use super::{WaterSurface, amplitude_sum, angular_frequency, resolve};
 use crate::{Error, Real, Water};
 
@@ -237,24 +237,23 @@ impl<T: Real> WaterSurface<T> for AiryWaves<T> {
         let (x, y, z) = (axis(0), axis(1), axis(2));
         let largest = |v: &[f64]| v.iter().fold(0.0, |m: f64, c| m.max(c.abs()));
         let extent = [largest(&x), largest(&y), largest(&z)];
+        let terms = resolve(&self.components, water, self.depth)?
+            .into_iter()
+            .map(|w| {
+                // The phase `k·q − ωt + φ`.
+                let k = w.k.map(T::to_f64);
+                let offset = (w.phase - w.omega * time).to_f64();
+                let bound = k.x.abs() * extent[0] + k.y.abs() * extent[1] + k.z.abs() * extent[2];
+                CosineTerm {
+                    k: [k.x, k.y, k.z],
+                    offset,
+                    amplitude: w.amplitude.to_f64(),
+                    in_range: cosine::in_range(bound + offset.abs()),
+                }
+            })
+            .collect::<Vec<_>>();
         let mut sum = alloc::vec![0.0; points.len()];
-        for w in resolve(&self.components, water, self.depth)? {
-            // The phase `k·q − ωt + φ`.
-            let k = w.k.map(T::to_f64);
-            let offset = (w.phase - w.omega * time).to_f64();
-            let amplitude = w.amplitude.to_f64();
-            let phases = (0..points.len()).map(|i| k.x * x[i] + k.y * y[i] + k.z * z[i] + offset);
-            let bound = k.x.abs() * extent[0] + k.y.abs() * extent[1] + k.z.abs() * extent[2];
-            if cosine::in_range(bound + offset.abs()) {
-                for (eta, phase) in sum.iter_mut().zip(phases) {
-                    *eta += amplitude * cosine::cos_in_range(phase);
-                }
-            } else {
-                for (eta, phase) in sum.iter_mut().zip(phases) {
-                    *eta += amplitude * cosine::cos(phase);
-                }
-            }
-        }
+        cosine::add_cosines(&mut sum, &x, &y, &z, &terms);
         for (eta, s) in elevations.iter_mut().zip(&sum) {
             *eta = T::from_f64_lossy(*s);
         }
