@@ -137,6 +137,8 @@ _RECORD = np.dtype(
 )
 # The scalars of one body: mass, gravity scale, dynamic and enabled, sleeping, locked axes.
 _MASS, _GRAVITY_SCALE, _ACTIVE, _SLEEPING, _LOCKED = range(5)
+# A force or torque that adds nothing, as a row of the controller's results reads.
+_ZERO = [0.0, 0.0, 0.0]
 # rapier's LockedAxes bits: translations x, y, z, then rotations x, y, z.
 _LOCK_BITS = np.array([1, 2, 4, 8, 16, 32], dtype=np.int64)
 
@@ -165,6 +167,90 @@ def _bytes_layout_ok() -> bool:
 
 
 _BYTES_LAYOUT_OK = _bytes_layout_ok()
+
+# Cheaper still: a whole body in one call, ``RigidBody.to_bytes``: rapier's serialised
+# ``RigidBody`` (the same 8-byte header, then its fields in their declared order, packed). Its
+# bytes before the mass properties' optional additional mass, and those after the list of its
+# colliders, have fixed sizes: the state is read at fixed offsets from the start (pose,
+# velocities, forces, gravity scale, world center of mass, mass properties in the body's frame,
+# locked axes) and from the end (sleeping, body type, enabled), for every body at once with
+# NumPy. Checked once at import against the getters on bodies this module builds (see
+# _body_layout_ok), and at every read for the bytes that tell a serialisation apart (header,
+# flags, body type); if either check fails, the state is read with the getters as above.
+_BODY_BYTES = rapier3d.RigidBody.to_bytes
+_HEADER_BYTES = np.frombuffer(_ISOMETRY_BYTES(rapier3d.Isometry3.identity())[:8], dtype=np.uint8)
+# The first _BODY_HEAD and the last _BODY_TAIL bytes of a body hold what is read.
+_BODY_HEAD = 266
+_BODY_TAIL = 91
+# From the start: two runs of float32s. The first, bytes 24 to 172: the rotation (x, y, z, w) at
+# 0, the translation at 4, the linear and angular velocities at 18 and 21, the gravity scale at
+# 30, the user force and torque at 31 and 34 (as stored: the getters read zero on a body that
+# is not dynamic). The second, bytes 173 to 265: the world center of mass at 0, the inverse mass
+# of the mass properties in the body's frame at 15. The mass properties in the body's frame
+# (local center of mass, inverse mass, inverse principal inertia, principal frame) are bytes
+# 221 to 265, the locked axes byte 265.
+_FLOATS = (slice(24, 172), slice(173, 265))
+_MASS_PROPERTIES = slice(221, 265)
+_LOCKED_AXES = 265
+# From the end (counted from _BODY_TAIL bytes before it): sleeping at 0, the body type at 37 (a
+# little-endian u32, 0 for dynamic), enabled at 42; their bytes and largest values.
+_TAIL_BYTES = [0, 37, 38, 39, 40, 42]
+_TAIL_LIMITS = np.array([1, 3, 0, 0, 0, 1], dtype=np.uint8)
+_SLEEPING_AT, _BODY_TYPE_AT, _ENABLED_AT = 0, 37, 42
+# The state's names, as _states takes them.
+_RECORD_NAMES = ("rotation", "translation", "center_of_mass", "linvel", "angvel", "force", "torque")
+
+State = tuple[dict[str, np.ndarray], dict[str, np.ndarray], list[bytes]]
+
+
+def _parse_bodies(blobs: list[bytes]) -> State | None:
+    """The bodies' state from their serialisations (:data:`_BODY_BYTES`), as the getters read
+    it (see :meth:`FloatingBodies._read`), and the keys of their mass properties; None if a
+    serialisation does not look as expected."""
+    n, length = len(blobs), len(blobs[0])
+    head, tail = _BODY_HEAD, _BODY_TAIL
+    lengths = set(map(len, blobs))
+    if min(lengths) < head + tail:
+        return None
+    if len(lengths) == 1:
+        raw = np.frombuffer(b"".join(blobs), dtype=np.uint8).reshape(n, length)
+    else:  # e.g. bodies of several colliders, or with an additional mass: their ends only
+        raw = np.frombuffer(b"".join([blob[:head] + blob[-tail:] for blob in blobs]), dtype=np.uint8)
+        raw, length = raw.reshape(n, head + tail), head + tail
+    flags = raw[:, [length - tail + k for k in _TAIL_BYTES]]
+    locked = raw[:, _LOCKED_AXES]
+    if not ((raw[:, :8] == _HEADER_BYTES).all() and (flags <= _TAIL_LIMITS).all() and (locked < 64).all()):
+        return None
+    first, second = (raw[:, part].copy().view("<f4") for part in _FLOATS)
+    dynamic = flags[:, 1] == 0
+    # The rotation as the getters read it: normalised in float32, |q|² summed as they sum it.
+    rotation = first[:, 0:4]
+    squares = rotation * rotation
+    pairs = squares[:, 0:2] + squares[:, 2:4]  # x² + z², y² + w²
+    with np.errstate(all="ignore"):
+        rotation = rotation / np.sqrt(pairs[:, 0] + pairs[:, 1])[:, None]
+        # The mass as rapier computes it (parry's utils::inv, in float32): zero for a zero inverse.
+        inverse_mass = second[:, 15]
+        mass = np.where(inverse_mass != 0, np.float32(1.0) / inverse_mass, np.float32(0.0))
+    wrench = first[:, 31:37] if dynamic.all() else np.where(dynamic[:, None], first[:, 31:37], np.float32(0.0))
+    record = {
+        "rotation": rotation,
+        "translation": first[:, 4:7],
+        "center_of_mass": second[:, 0:3],
+        "linvel": first[:, 18:21],
+        "angvel": first[:, 21:24],
+        "force": wrench[:, 0:3],
+        "torque": wrench[:, 3:6],
+    }
+    scalars = {
+        "mass": mass.astype(np.float64),
+        "gravity_scale": first[:, 30].astype(np.float64),
+        "active": dynamic & (flags[:, 5] != 0),
+        "sleeping": flags[:, 0] != 0,
+        "locked": locked,
+    }
+    keys = np.ascontiguousarray(raw[:, _MASS_PROPERTIES]).view(f"V{_MASS_PROPERTIES.stop - _MASS_PROPERTIES.start}")
+    return record, scalars, keys.ravel().tolist()
 
 
 def _water_for_gravity(gravity: npt.ArrayLike) -> Water:
@@ -502,20 +588,16 @@ class FloatingBodies:
                 return
             views, record, scalars = self._read(bodies)
         add_forces, add_torques, wake = self._controller.step(float(dt), *self._states(record, scalars))
-        forces: np.ndarray = np.any(add_forces, axis=1)
-        torques: np.ndarray = np.any(add_torques, axis=1)
-        changed = np.flatnonzero(forces | torques).tolist()
-        if not changed:
-            return
-        force_rows, torque_rows, wake_flags = add_forces.tolist(), add_torques.tolist(), wake.tolist()
-        adds_force, adds_torque = forces.tolist(), torques.tolist()
-        for i in changed:
-            rb = views[i]
-            # rapier ignores a zero addition (and does not wake the body for it).
-            if adds_force[i]:
-                rb.add_force(force_rows[i], wake_flags[i])
-            if adds_torque[i]:
-                rb.add_torque(torque_rows[i], wake_flags[i])
+        zero = _ZERO
+        for rb, force, torque, wake_up in zip(
+            views, add_forces.tolist(), add_torques.tolist(), wake.tolist(), strict=True
+        ):
+            # rapier ignores a zero addition (and does not wake the body for it). A row with a
+            # NaN is not zero; one of zeros of either sign is.
+            if force != zero:
+                rb.add_force(force, wake_up)
+            if torque != zero:
+                rb.add_torque(torque, wake_up)
 
     def place_at_rest(self, body: Hashable, bodies: Any, colliders: Any) -> Equilibrium:
         """Places ``body`` where it floats at rest in the still water (the still level under
@@ -561,55 +643,20 @@ class FloatingBodies:
             self._controller.remove(i)
             self._bodies.remove(i)
 
-    def _read(self, bodies: Any) -> tuple[list[Any], np.ndarray, np.ndarray]:
-        """rapier's views of the registered bodies, their state (one :data:`_RECORD` per body:
-        float32s, as rapier has them) and their scalars (see the column numbers above); reads
-        again the mass properties that changed."""
+    def _read(self, bodies: Any) -> tuple[list[Any], dict[str, np.ndarray], dict[str, np.ndarray]]:
+        """rapier's views of the registered bodies, their state and their scalars (see
+        :func:`_columns`); reads again the mass properties that changed."""
         registered = self._bodies
         views = registered.look_up(bodies)
-        scalars = []
-        keys: list[bytes | None] = []
-        if _BYTES_LAYOUT_OK:
-            isometry, point, vec = _ISOMETRY_BYTES, _POINT_BYTES, _VEC_BYTES
-            chunks: list[bytes] = []
-            for rb in views:
-                chunks += (
-                    isometry(rb.position),
-                    point(rb.center_of_mass),
-                    vec(rb.linvel),
-                    vec(rb.angvel),
-                    vec(rb.user_force),
-                    vec(rb.user_torque),
-                )
-                scalars.append(
-                    (rb.mass, rb.gravity_scale, rb.is_dynamic and rb.is_enabled, rb.is_sleeping, rb.locked_axes.bits)
-                )
-                keys.append(rb.mass_properties.to_bytes())
-            record = np.frombuffer(b"".join(chunks), dtype=_RECORD)
-        else:  # a rapier3d whose to_bytes format differs
-            rows = []
-            for rb in views:
-                rows.append(
-                    (
-                        *_ROTATION(rb.rotation),
-                        *_VEC(rb.translation),
-                        *_POINT(rb.center_of_mass),
-                        *_VEC(rb.linvel),
-                        *_VEC(rb.angvel),
-                        *_VEC(rb.user_force),
-                        *_VEC(rb.user_torque),
-                    )
-                )
-                scalars.append(
-                    (rb.mass, rb.gravity_scale, rb.is_dynamic and rb.is_enabled, rb.is_sleeping, rb.locked_axes.bits)
-                )
-                keys.append(rb.mass_properties.to_bytes())
-            record = _records(np.array(rows, dtype=np.float32))
+        state = _parse_bodies(list(map(_BODY_BYTES, views))) if _BODY_LAYOUT_OK else None
+        if state is None:  # a rapier3d whose serialisation differs
+            state = _read_vectors(views) if _BYTES_LAYOUT_OK else _read_tuples(views)
+        record, scalars, keys = state
         if keys != registered.keys:
             registered.refresh(keys)
-        return views, record, np.array(scalars, dtype=np.float64)
+        return views, record, scalars
 
-    def _states(self, record: np.ndarray, scalars: np.ndarray) -> tuple[np.ndarray, ...]:
+    def _states(self, record: dict[str, np.ndarray], scalars: dict[str, np.ndarray]) -> tuple[np.ndarray, ...]:
         """The arguments of :meth:`Controller.step` after ``dt``, from the state :meth:`_read`
         read: with rapier's effective inverse masses and world inverse inertias (zero on locked
         axes) from the mass properties in each body's frame."""
@@ -624,7 +671,7 @@ class FloatingBodies:
             rotations = _rotation_matrices(quaternions)
         inverse_masses, local_inverse_inertias = registered.mass_arrays()
         inverse_inertias = rotations @ local_inverse_inertias @ rotations.transpose(0, 2, 1)
-        locked = scalars[:, _LOCKED]
+        locked = scalars["locked"]
         if locked.any():
             free = ((locked.astype(np.int64)[:, None] & _LOCK_BITS) == 0).astype(np.float64)
             inverse_masses = inverse_masses[:, None] * free[:, :3]
@@ -635,15 +682,79 @@ class FloatingBodies:
             record["center_of_mass"],
             record["linvel"],
             record["angvel"],
-            scalars[:, _MASS],
+            scalars["mass"],
             inverse_masses,
             inverse_inertias,
-            scalars[:, _GRAVITY_SCALE],
+            scalars["gravity_scale"],
             record["force"],
             record["torque"],
-            scalars[:, _ACTIVE] != 0,
-            scalars[:, _SLEEPING] != 0,
+            scalars["active"],
+            scalars["sleeping"],
         )
+
+
+def _scalars(rb: Any) -> tuple[float, float, bool, bool, int]:
+    """A body's scalars (see the column numbers above), read with the getters."""
+    return rb.mass, rb.gravity_scale, rb.is_dynamic and rb.is_enabled, rb.is_sleeping, rb.locked_axes.bits
+
+
+def _columns(record: np.ndarray, scalars: list[tuple[float, float, bool, bool, int]], keys: list[bytes]) -> State:
+    """The state as :meth:`FloatingBodies._read` returns it, from :data:`_RECORD` s and rows of
+    scalars: the record's fields by name (float32s, as rapier has them; the rotation
+    ``(x, y, z, w)``); the masses and gravity scales (float64), whether each body is dynamic and
+    enabled and whether it sleeps (bool) and its locked axes (rapier's bits) by name; and the
+    mass properties' keys."""
+    table = np.array(scalars, dtype=np.float64).reshape(-1, 5)
+    columns = {
+        "mass": table[:, _MASS],
+        "gravity_scale": table[:, _GRAVITY_SCALE],
+        "active": table[:, _ACTIVE] != 0,
+        "sleeping": table[:, _SLEEPING] != 0,
+        "locked": table[:, _LOCKED],
+    }
+    return {name: record[name] for name in _RECORD_NAMES}, columns, keys
+
+
+def _read_vectors(views: list[Any]) -> State:
+    """The state of :func:`_parse_bodies`, read with the getters and each vector's ``to_bytes``."""
+    isometry, point, vec = _ISOMETRY_BYTES, _POINT_BYTES, _VEC_BYTES
+    chunks: list[bytes] = []
+    scalars = []
+    keys = []
+    for rb in views:
+        chunks += (
+            isometry(rb.position),
+            point(rb.center_of_mass),
+            vec(rb.linvel),
+            vec(rb.angvel),
+            vec(rb.user_force),
+            vec(rb.user_torque),
+        )
+        scalars.append(_scalars(rb))
+        keys.append(rb.mass_properties.to_bytes())
+    return _columns(np.frombuffer(b"".join(chunks), dtype=_RECORD), scalars, keys)
+
+
+def _read_tuples(views: list[Any]) -> State:
+    """The state of :func:`_parse_bodies`, read with the getters and ``to_tuple``."""
+    rows = []
+    scalars = []
+    keys = []
+    for rb in views:
+        rows.append(
+            (
+                *_ROTATION(rb.rotation),
+                *_VEC(rb.translation),
+                *_POINT(rb.center_of_mass),
+                *_VEC(rb.linvel),
+                *_VEC(rb.angvel),
+                *_VEC(rb.user_force),
+                *_VEC(rb.user_torque),
+            )
+        )
+        scalars.append(_scalars(rb))
+        keys.append(rb.mass_properties.to_bytes())
+    return _columns(_records(np.array(rows, dtype=np.float32)), scalars, keys)
 
 
 def _records(table: np.ndarray) -> np.ndarray:
@@ -656,3 +767,74 @@ def _records(table: np.ndarray) -> np.ndarray:
         record[name] = table[:, start : start + width]
         start += width
     return record
+
+
+def _body_layout_ok() -> bool:
+    """Whether :func:`_parse_bodies` reads bit for bit what the getters read (their vectors'
+    ``to_bytes``, as :func:`_read_vectors`), on bodies of every kind this module tells apart:
+    moving, tilted (32 rotations), with forces and locked axes; of three colliders with an
+    additional mass (a longer serialisation); kinematic and fixed with forces kept (read as zero);
+    disabled; sleeping. Each alone (serialisations of one length) and all together."""
+    if not _BYTES_LAYOUT_OK:
+        return False
+    try:
+        world = rapier3d.PhysicsWorld(gravity=(0.0, -9.81, 0.0))
+        views = []
+        for k in range(32):
+            builder = rapier3d.RigidBody.dynamic().translation((1.5 + k, -2.0, 3.25))
+            builder = builder.rotation((0.1 + 0.05 * k, -0.3 + 0.07 * k, 0.3 - 0.11 * k))
+            builder = builder.linvel((0.5, -1.0, 2.0 + k)).angvel((4.0, 5.0, -6.0 - k)).gravity_scale(0.75 + k)
+            colliders = [
+                rapier3d.Collider.cuboid(0.5, 0.25 + 0.1 * k, 0.125).density(500.0 + k).translation((0.1 * j, 0.2, 0.3))
+                for j in range(3 if k == 1 else 1)
+            ]
+            rb = world.rigid_bodies[world.add_body(builder, colliders)]
+            rb.add_force((7.0, 0.25, 8.0 + k), False)
+            rb.add_torque((-9.0, 10.0 + k, 11.5), False)
+            if k == 0:
+                rb.locked_axes = rapier3d.LockedAxes.ROTATION_LOCKED_X | rapier3d.LockedAxes.TRANSLATION_LOCKED_Z
+            elif k == 1:
+                rb.set_additional_mass(3.0, False)
+            rb.recompute_mass_properties_from_colliders(world.colliders)
+            if k == 2:
+                rb.body_type = rapier3d.RigidBodyType.KINEMATIC_VELOCITY_BASED
+            elif k == 3:
+                rb.body_type = rapier3d.RigidBodyType.FIXED
+            elif k == 4:
+                rb.is_enabled = False
+            elif k == 5:
+                rb.sleep()
+            views.append(rb)
+        blobs = [_BODY_BYTES(rb) for rb in views]
+        if len({len(blob) for blob in blobs}) < 2 or [rb.is_dynamic and rb.is_enabled for rb in views[:6]] != [
+            True,
+            True,
+            False,
+            False,
+            False,
+            True,
+        ]:
+            return False  # not the bodies the check needs
+
+        def same(a: dict[str, np.ndarray], b: dict[str, np.ndarray]) -> bool:
+            return a.keys() == b.keys() and all(
+                a[name].dtype.kind == b[name].dtype.kind
+                and np.asarray(a[name], dtype=np.float64).tobytes() == np.asarray(b[name], dtype=np.float64).tobytes()
+                for name in a
+            )
+
+        for part in [slice(None), *(slice(i, i + 1) for i in range(len(blobs)))]:
+            parsed, expected = _parse_bodies(blobs[part]), _read_vectors(views[part])
+            if (
+                parsed is None
+                or not same(parsed[0], expected[0])
+                or not same(parsed[1], {**expected[1], "locked": expected[1]["locked"].astype(np.uint8)})
+                or parsed[2] != [key[8:] for key in expected[2]]  # the keys without the header
+            ):
+                return False
+        return True
+    except Exception:  # pragma: no cover - a rapier3d whose format differs
+        return False
+
+
+_BODY_LAYOUT_OK = _body_layout_ok()

@@ -1007,6 +1007,57 @@ def test_state_read_without_the_bytes_format(monkeypatch: pytest.MonkeyPatch) ->
     assert forces() == with_bytes
 
 
+@pytest.mark.parametrize("read", ["vectors", "tuples"])
+def test_whole_body_read_gives_the_getters_forces(monkeypatch: pytest.MonkeyPatch, read: str) -> None:
+    # The state is read from each body's whole serialisation (RigidBody.to_bytes), checked at
+    # import against the getters; the forces are those of the getters' reads, bit for bit, over
+    # bodies of every kind: tilted and spinning, of several colliders, with an additional mass
+    # (serialisations of other lengths), locked axes, kinematic for a while with a force of the
+    # application's own, disabled, asleep, and with the application's forces reset.
+    assert buoyancy.rapier._BODY_LAYOUT_OK
+
+    def run() -> list[list[float]]:
+        pool = Pool()
+        handles = [pool.half_density_cube(0.2 * k - 0.3) for k in range(4)]
+        handles.append(
+            pool.add(
+                rapier3d.RigidBody.dynamic().translation((3.0, 0.1, 0.0)).rotation((0.2, 0.5, -0.1)),
+                [
+                    rapier3d.Collider.cuboid(0.5, 0.25, 0.25).translation((0.0, 0.0, z)).density(400.0)
+                    for z in (-0.25, 0.25)
+                ],
+                [(buoyancy.shapes.cube(), (0.0, 0.0, z), (0.0, 0.0, 0.0, 1.0)) for z in (-0.25, 0.25)],
+            )
+        )
+        for handle in handles:
+            pool.body(handle).angvel = (0.3, -0.2, 0.5)
+        pool.body(handles[1]).set_additional_mass(120.0)
+        pool.body(handles[2]).locked_axes = rapier3d.LockedAxes.ROTATION_LOCKED_X
+        pool.body(handles[3]).add_force((5.0, 30.0, -2.0), True)
+        pool.body(handles[3]).body_type = rapier3d.RigidBodyType.KINEMATIC_VELOCITY_BASED
+        rows = []
+        for step in range(40):
+            if step == 10:
+                pool.body(handles[3]).body_type = rapier3d.RigidBodyType.DYNAMIC
+                pool.body(handles[0]).is_enabled = False
+            if step == 20:
+                pool.body(handles[0]).is_enabled = True
+                pool.body(handles[2]).sleep()
+                pool.body(handles[4]).reset_forces()
+                pool.water.forget_applied(handles[4])
+            pool.step()
+            for h in handles:
+                rb = pool.body(h)
+                rows.append([*vec(rb.user_force), *vec(rb.user_torque), *vec(rb.translation), *vec(rb.angvel)])
+        return rows
+
+    whole = run()
+    monkeypatch.setattr(buoyancy.rapier, "_BODY_LAYOUT_OK", False)
+    if read == "tuples":
+        monkeypatch.setattr(buoyancy.rapier, "_BYTES_LAYOUT_OK", False)
+    assert np.array_equal(np.array(run()), np.array(whole))
+
+
 def test_locked_axes_and_mass_changes_are_read() -> None:
     # The effective inverse mass and inertia are rapier's (zero on locked axes), read again when
     # the locked axes or the mass properties change: they set the semi-implicit damping's rate.
