@@ -56,6 +56,7 @@ __all__ = [
     "Water",
     "Waterplane",
     "Waves",
+    "_gather_bytes",
     "cube",
     "load",
     "torus",
@@ -916,3 +917,7 @@ def wigley_hull(
     waterlines: int = 17,
 ) -> Mesh:
     """A closed Wigley hull floating upright at its design draft (y up, waterline at y = 0)."""
+
+def _gather_bytes(blobs: list[bytes], ranges: Sequence[tuple[int, int]]) -> npt.NDArray[np.uint8]:
+    """The bytes of every blob at each ``(offset, length)`` of ``ranges`` (a negative offset from
+    its end), one row per blob: buoyancy.rapier's bulk read of rapier3d's serialised bodies."""

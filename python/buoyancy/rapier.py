@@ -92,7 +92,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ._core import Controller, DampingCoefficients, Equilibrium, FloatReport, Mesh, Water
+from ._core import Controller, DampingCoefficients, Equilibrium, FloatReport, Mesh, Water, _gather_bytes
 
 try:
     import rapier3d
@@ -105,8 +105,10 @@ __all__ = ["FloatReport", "FloatingBodies"]
 
 _DYNAMIC = rapier3d.RigidBodyType.DYNAMIC
 
-# The cheapest way to a rapier vector's numbers: its serialised float32s, read by NumPy for every
-# body at once (the unbound methods of the classes, no bound method made per call). The layout is
+# A body's state is read from its whole serialisation (see _BODY_BYTES below) or, should that
+# format differ, with the getters: the cheapest way to a rapier vector's numbers is then its
+# serialised float32s, read by NumPy for every body at once (the unbound methods of the classes,
+# no bound method made per call). The layout is
 # rapier3d's ``to_bytes`` format (an 8-byte header, then the float32s: a rotation x, y, z, w
 # before the translation for an Isometry3), checked once at import against values this module
 # builds (see _bytes_layout_ok); if it ever differs, the numbers are read with ``to_tuple``.
@@ -171,32 +173,38 @@ _BYTES_LAYOUT_OK = _bytes_layout_ok()
 # Cheaper still: a whole body in one call, ``RigidBody.to_bytes``: rapier's serialised
 # ``RigidBody`` (the same 8-byte header, then its fields in their declared order, packed). Its
 # bytes before the mass properties' optional additional mass, and those after the list of its
-# colliders, have fixed sizes: the state is read at fixed offsets from the start (pose,
-# velocities, forces, gravity scale, world center of mass, mass properties in the body's frame,
-# locked axes) and from the end (sleeping, body type, enabled), for every body at once with
-# NumPy. Checked once at import against the getters on bodies this module builds (see
-# _body_layout_ok), and at every read for the bytes that tell a serialisation apart (header,
-# flags, body type); if either check fails, the state is read with the getters as above.
+# colliders, have fixed sizes: the state is at fixed offsets from the start (pose, velocities,
+# forces, gravity scale, world center of mass, mass properties in the body's frame, locked axes)
+# and from the end (sleeping, body type, enabled). The bindings gather those bytes of every body
+# into one array (_gather_bytes), which NumPy reads. Checked once at import against the getters
+# on bodies this module builds (see _body_layout_ok), and at every read for the bytes that tell
+# a serialisation apart (header, flags, body type); if either check fails, the state is read
+# with the getters as above.
 _BODY_BYTES = rapier3d.RigidBody.to_bytes
-_HEADER_BYTES = np.frombuffer(_ISOMETRY_BYTES(rapier3d.Isometry3.identity())[:8], dtype=np.uint8)
-# The first _BODY_HEAD and the last _BODY_TAIL bytes of a body hold what is read.
-_BODY_HEAD = 266
-_BODY_TAIL = 91
-# From the start: two runs of float32s. The first, bytes 24 to 172: the rotation (x, y, z, w) at
-# 0, the translation at 4, the linear and angular velocities at 18 and 21, the gravity scale at
-# 30, the user force and torque at 31 and 34 (as stored: the getters read zero on a body that
-# is not dynamic). The second, bytes 173 to 265: the world center of mass at 0, the inverse mass
-# of the mass properties in the body's frame at 15. The mass properties in the body's frame
-# (local center of mass, inverse mass, inverse principal inertia, principal frame) are bytes
-# 221 to 265, the locked axes byte 265.
-_FLOATS = (slice(24, 172), slice(173, 265))
-_MASS_PROPERTIES = slice(221, 265)
-_LOCKED_AXES = 265
-# From the end (counted from _BODY_TAIL bytes before it): sleeping at 0, the body type at 37 (a
-# little-endian u32, 0 for dynamic), enabled at 42; their bytes and largest values.
-_TAIL_BYTES = [0, 37, 38, 39, 40, 42]
-_TAIL_LIMITS = np.array([1, 3, 0, 0, 0, 1], dtype=np.uint8)
-_SLEEPING_AT, _BODY_TYPE_AT, _ENABLED_AT = 0, 37, 42
+# The (offset, length) of the bytes read, an offset < 0 counted from the end; gathered side by
+# side, 256 bytes a body:
+_BODY_RANGES = (
+    # Bytes 0 to 148, 37 float32s: the rotation (x, y, z, w) at 0, the translation at 4, the
+    # linear and angular velocities at 18 and 21, the gravity scale at 30, the user force and
+    # torque at 31 and 34 (as stored: the getters read zero on a body that is not dynamic).
+    (24, 148),
+    # Bytes 148 to 240, float32s 37 to 60: the world center of mass at 37, rapier's effective
+    # mass properties, then the mass properties in the body's frame (local center of mass,
+    # inverse mass at 52, inverse principal inertia, principal frame), bytes 196 to 240.
+    (173, 92),
+    (0, 8),  # 240: the header
+    (265, 1),  # 248: the locked axes
+    (-91, 1),  # 249: sleeping
+    (-54, 4),  # 250: the body type, a little-endian u32 (0: dynamic)
+    (-49, 1),  # 254: enabled
+    (0, 1),  # 255: not read (the rows' float32s aligned)
+)
+_MASS_PROPERTIES = slice(196, 240)
+# The bytes 240 to 256 exclusive-ored with _CHECK_BASE are at most _CHECK_LIMITS: the header
+# as expected, the locked axes 6 bits, the flags 0 or 1, the body type one of 4.
+_CHECK_BASE = np.zeros(16, dtype=np.uint8)
+_CHECK_BASE[:8] = np.frombuffer(_ISOMETRY_BYTES(rapier3d.Isometry3.identity())[:8], dtype=np.uint8)
+_CHECK_LIMITS = np.array([0] * 8 + [63, 1, 3, 0, 0, 0, 1, 255], dtype=np.uint8)
 # The state's names, as _states takes them.
 _RECORD_NAMES = ("rotation", "translation", "center_of_mass", "linvel", "angvel", "force", "torque")
 
@@ -207,50 +215,42 @@ def _parse_bodies(blobs: list[bytes]) -> State | None:
     """The bodies' state from their serialisations (:data:`_BODY_BYTES`), as the getters read
     it (see :meth:`FloatingBodies._read`), and the keys of their mass properties; None if a
     serialisation does not look as expected."""
-    n, length = len(blobs), len(blobs[0])
-    head, tail = _BODY_HEAD, _BODY_TAIL
-    lengths = set(map(len, blobs))
-    if min(lengths) < head + tail:
+    try:
+        rows = _gather_bytes(blobs, _BODY_RANGES)
+    except ValueError:  # too short
         return None
-    if len(lengths) == 1:
-        raw = np.frombuffer(b"".join(blobs), dtype=np.uint8).reshape(n, length)
-    else:  # e.g. bodies of several colliders, or with an additional mass: their ends only
-        raw = np.frombuffer(b"".join([blob[:head] + blob[-tail:] for blob in blobs]), dtype=np.uint8)
-        raw, length = raw.reshape(n, head + tail), head + tail
-    flags = raw[:, [length - tail + k for k in _TAIL_BYTES]]
-    locked = raw[:, _LOCKED_AXES]
-    if not ((raw[:, :8] == _HEADER_BYTES).all() and (flags <= _TAIL_LIMITS).all() and (locked < 64).all()):
+    if not ((rows[:, 240:] ^ _CHECK_BASE) <= _CHECK_LIMITS).all():
         return None
-    first, second = (raw[:, part].copy().view("<f4") for part in _FLOATS)
-    dynamic = flags[:, 1] == 0
+    floats = rows[:, :240].view("<f4")
+    dynamic = rows[:, 250] == 0
     # The rotation as the getters read it: normalised in float32, |q|² summed as they sum it.
-    rotation = first[:, 0:4]
+    rotation = floats[:, 0:4]
     squares = rotation * rotation
     pairs = squares[:, 0:2] + squares[:, 2:4]  # x² + z², y² + w²
     with np.errstate(all="ignore"):
         rotation = rotation / np.sqrt(pairs[:, 0] + pairs[:, 1])[:, None]
         # The mass as rapier computes it (parry's utils::inv, in float32): zero for a zero inverse.
-        inverse_mass = second[:, 15]
+        inverse_mass = floats[:, 52]
         mass = np.where(inverse_mass != 0, np.float32(1.0) / inverse_mass, np.float32(0.0))
-    wrench = first[:, 31:37] if dynamic.all() else np.where(dynamic[:, None], first[:, 31:37], np.float32(0.0))
+    wrench = floats[:, 31:37] if dynamic.all() else np.where(dynamic[:, None], floats[:, 31:37], np.float32(0.0))
     record = {
         "rotation": rotation,
-        "translation": first[:, 4:7],
-        "center_of_mass": second[:, 0:3],
-        "linvel": first[:, 18:21],
-        "angvel": first[:, 21:24],
+        "translation": floats[:, 4:7],
+        "center_of_mass": floats[:, 37:40],
+        "linvel": floats[:, 18:21],
+        "angvel": floats[:, 21:24],
         "force": wrench[:, 0:3],
         "torque": wrench[:, 3:6],
     }
     scalars = {
         "mass": mass.astype(np.float64),
-        "gravity_scale": first[:, 30].astype(np.float64),
-        "active": dynamic & (flags[:, 5] != 0),
-        "sleeping": flags[:, 0] != 0,
-        "locked": locked,
+        "gravity_scale": floats[:, 30].astype(np.float64),
+        "active": dynamic & (rows[:, 254] != 0),
+        "sleeping": rows[:, 249] != 0,
+        "locked": rows[:, 248],
     }
-    keys = np.ascontiguousarray(raw[:, _MASS_PROPERTIES]).view(f"V{_MASS_PROPERTIES.stop - _MASS_PROPERTIES.start}")
-    return record, scalars, keys.ravel().tolist()
+    keys = rows[:, _MASS_PROPERTIES].view(f"V{_MASS_PROPERTIES.stop - _MASS_PROPERTIES.start}")[:, 0].tolist()
+    return record, scalars, keys
 
 
 def _water_for_gravity(gravity: npt.ArrayLike) -> Water:

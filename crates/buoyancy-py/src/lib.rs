@@ -19,6 +19,7 @@ mod detach;
 mod errors;
 mod float_report;
 mod format;
+mod gather;
 mod gerstner;
 mod height_grid;
 mod hydrostatics;
@@ -69,6 +70,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(shapes::torus, m)?)?;
     m.add_function(wrap_pyfunction!(shapes::torus_knot, m)?)?;
     m.add_function(wrap_pyfunction!(shapes::wigley_hull, m)?)?;
+    m.add_function(wrap_pyfunction!(gather::gather_bytes, m)?)?;
     m.add("METHODS", PyTuple::new(py, Method::ALL.map(Method::name))?)?;
     m.add("QUATERNION_TOLERANCE", convert::QUATERNION_TOLERANCE)?;
     m.add("MATRIX_TOLERANCE", convert::MATRIX_TOLERANCE)?;
