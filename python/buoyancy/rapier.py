@@ -222,7 +222,6 @@ def _parse_bodies(blobs: list[bytes]) -> State | None:
     if not ((rows[:, 240:] ^ _CHECK_BASE) <= _CHECK_LIMITS).all():
         return None
     floats = rows[:, :240].view("<f4")
-    dynamic = rows[:, 250] == 0
     # The rotation as the getters read it: normalised in float32, |q|² summed as they sum it.
     rotation = floats[:, 0:4]
     squares = rotation * rotation
@@ -232,7 +231,10 @@ def _parse_bodies(blobs: list[bytes]) -> State | None:
         # The mass as rapier computes it (parry's utils::inv, in float32): zero for a zero inverse.
         inverse_mass = floats[:, 52]
         mass = np.where(inverse_mass != 0, np.float32(1.0) / inverse_mass, np.float32(0.0))
-    wrench = floats[:, 31:37] if dynamic.all() else np.where(dynamic[:, None], floats[:, 31:37], np.float32(0.0))
+    if rows[:, 250].any():  # a body that is not dynamic, whose getters read no force
+        wrench = np.where(rows[:, 250, None] == 0, floats[:, 31:37], np.float32(0.0))
+    else:
+        wrench = floats[:, 31:37]
     record = {
         "rotation": rotation,
         "translation": floats[:, 4:7],
@@ -245,8 +247,9 @@ def _parse_bodies(blobs: list[bytes]) -> State | None:
     scalars = {
         "mass": mass.astype(np.float64),
         "gravity_scale": floats[:, 30].astype(np.float64),
-        "active": dynamic & (rows[:, 254] != 0),
-        "sleeping": rows[:, 249] != 0,
+        # Dynamic (body type 0) and enabled (1): the body type less than the enabled flag.
+        "active": rows[:, 250] < rows[:, 254],
+        "sleeping": rows[:, 249].view(np.bool_),  # 0 or 1, checked above
         "locked": rows[:, 248],
     }
     keys = rows[:, _MASS_PROPERTIES].view(f"V{_MASS_PROPERTIES.stop - _MASS_PROPERTIES.start}")[:, 0].tolist()
