@@ -208,10 +208,10 @@ _CHECK_LIMITS = np.array([0] * 8 + [63, 1, 3, 0, 0, 0, 1, 255], dtype=np.uint8)
 # The state's names, as _states takes them.
 _RECORD_NAMES = ("rotation", "translation", "center_of_mass", "linvel", "angvel", "force", "torque")
 
-State = tuple[dict[str, np.ndarray], dict[str, np.ndarray], list[bytes]]
+_State = tuple[dict[str, np.ndarray], dict[str, np.ndarray], list[bytes]]
 
 
-def _parse_bodies(blobs: list[bytes]) -> State | None:
+def _parse_bodies(blobs: list[bytes]) -> _State | None:
     """The bodies' state from their serialisations (:data:`_BODY_BYTES`), as the getters read
     it (see :meth:`FloatingBodies._read`), and the keys of their mass properties; None if a
     serialisation does not look as expected."""
@@ -701,7 +701,7 @@ def _scalars(rb: Any) -> tuple[float, float, bool, bool, int]:
     return rb.mass, rb.gravity_scale, rb.is_dynamic and rb.is_enabled, rb.is_sleeping, rb.locked_axes.bits
 
 
-def _columns(record: np.ndarray, scalars: list[tuple[float, float, bool, bool, int]], keys: list[bytes]) -> State:
+def _columns(record: np.ndarray, scalars: list[tuple[float, float, bool, bool, int]], keys: list[bytes]) -> _State:
     """The state as :meth:`FloatingBodies._read` returns it, from :data:`_RECORD` s and rows of
     scalars: the record's fields by name (float32s, as rapier has them; the rotation
     ``(x, y, z, w)``); the masses and gravity scales (float64), whether each body is dynamic and
@@ -718,7 +718,7 @@ def _columns(record: np.ndarray, scalars: list[tuple[float, float, bool, bool, i
     return {name: record[name] for name in _RECORD_NAMES}, columns, keys
 
 
-def _read_vectors(views: list[Any]) -> State:
+def _read_vectors(views: list[Any]) -> _State:
     """The state of :func:`_parse_bodies`, read with the getters and each vector's ``to_bytes``."""
     isometry, point, vec = _ISOMETRY_BYTES, _POINT_BYTES, _VEC_BYTES
     chunks: list[bytes] = []
@@ -738,7 +738,7 @@ def _read_vectors(views: list[Any]) -> State:
     return _columns(np.frombuffer(b"".join(chunks), dtype=_RECORD), scalars, keys)
 
 
-def _read_tuples(views: list[Any]) -> State:
+def _read_tuples(views: list[Any]) -> _State:
     """The state of :func:`_parse_bodies`, read with the getters and ``to_tuple``."""
     rows = []
     scalars = []
@@ -809,14 +809,8 @@ def _body_layout_ok() -> bool:
                 rb.sleep()
             views.append(rb)
         blobs = [_BODY_BYTES(rb) for rb in views]
-        if len({len(blob) for blob in blobs}) < 2 or [rb.is_dynamic and rb.is_enabled for rb in views[:6]] != [
-            True,
-            True,
-            False,
-            False,
-            False,
-            True,
-        ]:
+        active = [rb.is_dynamic and rb.is_enabled for rb in views[:6]]
+        if len({len(blob) for blob in blobs}) < 2 or active != [True, True, False, False, False, True]:
             return False  # not the bodies the check needs
 
         def same(a: dict[str, np.ndarray], b: dict[str, np.ndarray]) -> bool:
