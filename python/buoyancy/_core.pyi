@@ -56,7 +56,7 @@ __all__ = [
     "Water",
     "Waterplane",
     "Waves",
-    "_gather_bytes",
+    "_rapier_bodies",
     "cube",
     "load",
     "torus",
@@ -918,6 +918,8 @@ def wigley_hull(
 ) -> Mesh:
     """A closed Wigley hull floating upright at its design draft (y up, waterline at y = 0)."""
 
-def _gather_bytes(blobs: list[bytes], ranges: Sequence[tuple[int, int]]) -> npt.NDArray[np.uint8]:
-    """The bytes of every blob at each ``(offset, length)`` of ``ranges`` (a negative offset from
-    its end), one row per blob: buoyancy.rapier's bulk read of rapier3d's serialised bodies."""
+def _rapier_bodies(
+    blobs: list[bytes], header: bytes
+) -> tuple[npt.NDArray[np.float64], _Float32Array, npt.NDArray[np.uint8], list[bytes]] | None:
+    """The state of rapier3d's rigid bodies from their ``RigidBody.to_bytes`` (buoyancy.rapier's
+    bulk read): values (N, 18), wrench (N, 6), flags (N, 3) and the mass properties' bytes."""

@@ -92,7 +92,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ._core import Controller, DampingCoefficients, Equilibrium, FloatReport, Mesh, Water, _gather_bytes
+from ._core import Controller, DampingCoefficients, Equilibrium, FloatReport, Mesh, Water, _rapier_bodies
 
 try:
     import rapier3d
@@ -170,41 +170,14 @@ def _bytes_layout_ok() -> bool:
 
 _BYTES_LAYOUT_OK = _bytes_layout_ok()
 
-# Cheaper still: a whole body in one call, ``RigidBody.to_bytes``: rapier's serialised
-# ``RigidBody`` (the same 8-byte header, then its fields in their declared order, packed). Its
-# bytes before the mass properties' optional additional mass, and those after the list of its
-# colliders, have fixed sizes: the state is at fixed offsets from the start (pose, velocities,
-# forces, gravity scale, world center of mass, mass properties in the body's frame, locked axes)
-# and from the end (sleeping, body type, enabled). The bindings gather those bytes of every body
-# into one array (_gather_bytes), which NumPy reads. Checked once at import against the getters
-# on bodies this module builds (see _body_layout_ok), and at every read for the bytes that tell
-# a serialisation apart (header, flags, body type); if either check fails, the state is read
-# with the getters as above.
+# Cheaper still: a whole body in one call, ``RigidBody.to_bytes`` (rapier's serialised
+# ``RigidBody``, after the same 8-byte header), every body's state then read from those bytes by
+# the bindings in one call (_rapier_bodies: the fields at fixed offsets from the start and the
+# end, as the getters return them). Checked once at import against the getters, bit for bit, on
+# bodies this module builds (see _body_layout_ok), and at every read for the header and flags of
+# every body; if either check fails, the state is read with the getters as above.
 _BODY_BYTES = rapier3d.RigidBody.to_bytes
-# The (offset, length) of the bytes read, an offset < 0 counted from the end; gathered side by
-# side, 256 bytes a body:
-_BODY_RANGES = (
-    # Bytes 0 to 148, 37 float32s: the rotation (x, y, z, w) at 0, the translation at 4, the
-    # linear and angular velocities at 18 and 21, the gravity scale at 30, the user force and
-    # torque at 31 and 34 (as stored: the getters read zero on a body that is not dynamic).
-    (24, 148),
-    # Bytes 148 to 240, float32s 37 to 60: the world center of mass at 37, rapier's effective
-    # mass properties, then the mass properties in the body's frame (local center of mass,
-    # inverse mass at 52, inverse principal inertia, principal frame), bytes 196 to 240.
-    (173, 92),
-    (0, 8),  # 240: the header
-    (265, 1),  # 248: the locked axes
-    (-91, 1),  # 249: sleeping
-    (-54, 4),  # 250: the body type, a little-endian u32 (0: dynamic)
-    (-49, 1),  # 254: enabled
-    (0, 1),  # 255: not read (the rows' float32s aligned)
-)
-_MASS_PROPERTIES = slice(196, 240)
-# The bytes 240 to 256 exclusive-ored with _CHECK_BASE are at most _CHECK_LIMITS: the header
-# as expected, the locked axes 6 bits, the flags 0 or 1, the body type one of 4.
-_CHECK_BASE = np.zeros(16, dtype=np.uint8)
-_CHECK_BASE[:8] = np.frombuffer(_ISOMETRY_BYTES(rapier3d.Isometry3.identity())[:8], dtype=np.uint8)
-_CHECK_LIMITS = np.array([0] * 8 + [63, 1, 3, 0, 0, 0, 1, 255], dtype=np.uint8)
+_BODY_HEADER = _ISOMETRY_BYTES(rapier3d.Isometry3.identity())[:8]
 # The state's names, as _states takes them.
 _RECORD_NAMES = ("rotation", "translation", "center_of_mass", "linvel", "angvel", "force", "torque")
 
@@ -215,44 +188,26 @@ def _parse_bodies(blobs: list[bytes]) -> _State | None:
     """The bodies' state from their serialisations (:data:`_BODY_BYTES`), as the getters read
     it (see :meth:`FloatingBodies._read`), and the keys of their mass properties; None if a
     serialisation does not look as expected."""
-    try:
-        rows = _gather_bytes(blobs, _BODY_RANGES)
-    except ValueError:  # too short
+    parsed = _rapier_bodies(blobs, _BODY_HEADER)
+    if parsed is None:
         return None
-    if not ((rows[:, 240:] ^ _CHECK_BASE) <= _CHECK_LIMITS).all():
-        return None
-    floats = rows[:, :240].view("<f4")
-    # The rotation as the getters read it: normalised in float32, |q|² summed as they sum it.
-    rotation = floats[:, 0:4]
-    squares = rotation * rotation
-    pairs = squares[:, 0:2] + squares[:, 2:4]  # x² + z², y² + w²
-    with np.errstate(all="ignore"):
-        rotation = rotation / np.sqrt(pairs[:, 0] + pairs[:, 1])[:, None]
-        # The mass as rapier computes it (parry's utils::inv, in float32): zero for a zero inverse.
-        inverse_mass = floats[:, 52]
-        mass = np.where(inverse_mass != 0, np.float32(1.0) / inverse_mass, np.float32(0.0))
-    if rows[:, 250].any():  # a body that is not dynamic, whose getters read no force
-        wrench = np.where(rows[:, 250, None] == 0, floats[:, 31:37], np.float32(0.0))
-    else:
-        wrench = floats[:, 31:37]
+    values, wrench, flags, keys = parsed
     record = {
-        "rotation": rotation,
-        "translation": floats[:, 4:7],
-        "center_of_mass": floats[:, 37:40],
-        "linvel": floats[:, 18:21],
-        "angvel": floats[:, 21:24],
+        "rotation": values[:, 0:4],
+        "translation": values[:, 4:7],
+        "center_of_mass": values[:, 7:10],
+        "linvel": values[:, 10:13],
+        "angvel": values[:, 13:16],
         "force": wrench[:, 0:3],
         "torque": wrench[:, 3:6],
     }
     scalars = {
-        "mass": mass.astype(np.float64),
-        "gravity_scale": floats[:, 30].astype(np.float64),
-        # Dynamic (body type 0) and enabled (1): the body type less than the enabled flag.
-        "active": rows[:, 250] < rows[:, 254],
-        "sleeping": rows[:, 249].view(np.bool_),  # 0 or 1, checked above
-        "locked": rows[:, 248],
+        "mass": values[:, 16],
+        "gravity_scale": values[:, 17],
+        "active": flags[:, 0].view(np.bool_),
+        "sleeping": flags[:, 1].view(np.bool_),
+        "locked": flags[:, 2],
     }
-    keys = rows[:, _MASS_PROPERTIES].view(f"V{_MASS_PROPERTIES.stop - _MASS_PROPERTIES.start}")[:, 0].tolist()
     return record, scalars, keys
 
 
@@ -664,7 +619,7 @@ class FloatingBodies:
         read: with rapier's effective inverse masses and world inverse inertias (zero on locked
         axes) from the mass properties in each body's frame."""
         registered = self._bodies
-        quaternions = record["rotation"].astype(np.float64)
+        quaternions = np.asarray(record["rotation"], dtype=np.float64)
         if not np.isfinite(quaternions).all():
             # A body whose rotation is not finite gets no force (the controller says so); its
             # inertia must still be finite.
