@@ -18,14 +18,17 @@
 //! `ExactSurface`'s.
 //!
 //! # The walk
-//! With `b` a bound on `|η|` ([`WaterSurface::elevation_bound`]), the free surface lies within
-//! `b` of the still plane, and the hierarchy is walked against that layer: a node more than `b`
-//! above the still plane is dry and skipped; a leaf within reach of the layer has its
-//! triangles cut and integrated one by one; a node more than `b` below is under water all
-//! over, and is summed without visiting its triangles' corners. Every sum of a triangle is
+//! With `[low, high]` bounds on `η` over the horizontal disc of the mesh's bounding radius
+//! about its centroid ([`WaterSurface::elevation_range`]; `±b` from
+//! [`WaterSurface::elevation_bound`] by default), the free surface lies in the layer between
+//! them, of middle `m = (low + high)/2` and half thickness `b = (high − low)/2`, and the
+//! hierarchy is walked against that layer: a node more than `b` above its middle is dry and
+//! skipped; a leaf within reach of the layer has its triangles cut and integrated one by one;
+//! a node more than `b` below is under water all over, and is summed without visiting its
+//! triangles' corners. For waves long against the body the layer is thin wherever it lies. Every sum of a triangle is
 //! linear in its vertex heights but one (see `vertex_terms`): per vertex, twelve coefficients
 //! summed over the triangles around it give the linear part of every triangle around a *deep*
-//! vertex (more than `b` below the still plane) in one multiply-add each, the crossed leaves
+//! vertex (more than `b` below the middle of the layer) in one multiply-add each, the crossed leaves
 //! take their own triangles' shares back out, and the submerged nodes add the quadratic term
 //! triangle by triangle, three heights each. The surface is evaluated at every vertex that may
 //! be wet: with the pressure `ρg(η − z)` at every depth, every wet vertex's `η` counts.
@@ -57,10 +60,10 @@ impl<T: Real> Mesh<T> {
     /// the wetted surface (see the [module documentation](crate::wave_pressure)). The torque is
     /// about the body's center of mass.
     ///
-    /// The cost follows what is under water: with `b` the surface's
-    /// [`elevation_bound`](WaterSurface::elevation_bound), the hierarchy skips the nodes more
-    /// than `b` above the still plane, integrates triangle by triangle only the leaves within
-    /// `b` of it, and sums the rest through per-vertex coefficients (see [the
+    /// The cost follows what is under water: with the layer the surface's
+    /// [`elevation_range`](WaterSurface::elevation_range) gives over the body, the hierarchy
+    /// skips the nodes above it, integrates triangle by triangle only the leaves within it, and
+    /// sums the rest through per-vertex coefficients (see [the
     /// walk](crate::wave_pressure#the-walk)). The surface is evaluated once per vertex that may
     /// be wet, in one call for up to 16,384 vertices. A calm surface (`b = 0`) is
     /// [`Method::ExactSurface`] on the hierarchy. It allocates a
@@ -131,20 +134,20 @@ impl<T: Real> Mesh<T> {
     ) -> Result<Buoyancy<T>, Error> {
         let frame = Frame::new(self, pose, water)?;
         check_time(time)?;
-        let reach = surface_reach(surface);
-        if reach == Some(T::zero()) {
+        let layer = Layer::of(surface, water, &frame, self.bounding_radius, time);
+        if layer.is_some_and(|l| l.mid == T::zero() && l.reach == T::zero()) {
             return self
                 .surface(&frame, water, Method::ExactSurface, true, parallel)
                 .checked();
         }
         let (heights, deep) =
-            self.heights_in_waves(&frame, water, surface, time, reach, parallel)?;
+            self.heights_in_waves(&frame, water, surface, time, layer, parallel)?;
         let n = frame.normal_local;
         let infinite = T::from_f64_lossy(f64::INFINITY);
         let walk = self.hierarchy.reduce_in_layer(
             &n,
-            frame.height,
-            reach.unwrap_or(infinite),
+            layer.map_or(frame.height, |l| frame.height - l.mid),
+            layer.map_or(infinite, |l| l.reach),
             parallel,
             &|walk: &mut WaveWalk<T>, visit| match visit {
                 Visit::SubmergedNode {
@@ -160,7 +163,7 @@ impl<T: Real> Mesh<T> {
                 }
                 Visit::CrossedLeaf { triangles } => {
                     for i in triangles {
-                        self.crossed_triangle(walk, &frame, i, &heights, reach);
+                        self.crossed_triangle(walk, &frame, i, &heights, layer);
                     }
                 }
             },
@@ -199,7 +202,7 @@ impl<T: Real> Mesh<T> {
         frame: &Frame<T>,
         i: usize,
         heights: &[T],
-        reach: Option<T>,
+        layer: Option<Layer<T>>,
     ) {
         let [a, b, c] = self.leaf_triangles[i];
         let v = self.corners(i);
@@ -210,8 +213,13 @@ impl<T: Real> Mesh<T> {
         ];
         walk.triangles
             .add_wetted_part(&frame.normal_local, v, h, true, &self.double_areas[i]);
-        let Some(reach) = reach else { return };
-        let still = frame.heights(&v);
+        let Some(Layer { mid, reach }) = layer else {
+            return;
+        };
+        // Heights above the middle of the layer, as the vertex pass and the walk take them.
+        let n = &frame.normal_local;
+        let height = frame.height - mid;
+        let still = v.map(|v| n.dot(&v) + height);
         if still.iter().all(|s| *s >= -reach) {
             return;
         }
@@ -233,12 +241,12 @@ impl<T: Real> Mesh<T> {
         water: &Water<T>,
         surface: &dyn WaterSurface<T>,
         time: T,
-        reach: Option<T>,
+        layer: Option<Layer<T>>,
         parallel: bool,
     ) -> Result<(Vec<T>, LinearSums<T>), Error> {
         let mut heights = alloc::vec![T::zero(); self.vertices.len()];
         let chunk = |(k, out): (usize, &mut [T])| {
-            self.heights_in_chunk(k * VERTEX_CHUNK, out, frame, water, surface, time, reach)
+            self.heights_in_chunk(k * VERTEX_CHUNK, out, frame, water, surface, time, layer)
         };
         #[cfg(feature = "rayon")]
         let chunks: Vec<Result<LinearSums<T>, Error>> = if parallel {
@@ -273,10 +281,11 @@ impl<T: Real> Mesh<T> {
 
     /// For the vertices from `first` on, one per entry of `heights`: their heights
     /// `n·x − level − η` above the free surface, and the linear sums (see `vertex_terms`) of
-    /// the deep ones, more than `reach` below the still plane, every triangle around which is
-    /// under water. A vertex more than `reach` plus the longest edge above the still plane
-    /// belongs to dry triangles only: it gets `n·x − level − reach > 0` and the surface is not
-    /// evaluated there. With no `reach` every vertex is evaluated and none is deep.
+    /// the deep ones, more than the `layer`'s reach below its middle, every triangle around
+    /// which is under water. A vertex more than the reach plus the longest edge above the
+    /// middle belongs to dry triangles only: it gets a positive height (its height above the
+    /// layer) and the surface is not evaluated there. With no `layer` every vertex is
+    /// evaluated and none is deep.
     #[allow(clippy::too_many_arguments)]
     fn heights_in_chunk(
         &self,
@@ -286,7 +295,7 @@ impl<T: Real> Mesh<T> {
         water: &Water<T>,
         surface: &dyn WaterSurface<T>,
         time: T,
-        reach: Option<T>,
+        layer: Option<Layer<T>>,
     ) -> Result<LinearSums<T>, Error> {
         let n = &frame.normal_local;
         let vertices = &self.vertices[first..first + heights.len()];
@@ -296,17 +305,25 @@ impl<T: Real> Mesh<T> {
             Vec::with_capacity(count),
             Vec::with_capacity(count),
         );
+        // The heights above the layer's middle are taken as the walk takes them, `n·x + h_c'`.
+        let layer_height = layer.map(|l| frame.height - l.mid);
         for (j, (h, v)) in heights.iter_mut().zip(vertices).enumerate() {
-            let still = n.dot(v) + frame.height;
+            let local = n.dot(v);
+            let still = local + frame.height;
             *h = still;
-            match reach {
-                Some(reach) if still > reach + self.longest_edge => *h = still - reach,
-                _ => {
-                    points.push(frame.center_of_mass + frame.rotation * v - frame.normal * still);
-                    wet.push(j as u32);
-                }
+            let (Some(Layer { reach, .. }), Some(layer_height)) = (layer, layer_height) else {
+                points.push(frame.center_of_mass + frame.rotation * v - frame.normal * still);
+                wet.push(j as u32);
+                continue;
+            };
+            let above_middle = local + layer_height;
+            if above_middle > reach + self.longest_edge {
+                *h = above_middle - reach;
+                continue;
             }
-            if reach.is_some_and(|reach| still < -reach) {
+            points.push(frame.center_of_mass + frame.rotation * v - frame.normal * still);
+            wet.push(j as u32);
+            if above_middle < -reach {
                 deep.push(j as u32);
             }
         }
@@ -457,6 +474,39 @@ fn check_time<T: Real>(time: T) -> Result<(), Error> {
         Err(Error::InvalidSurface {
             parameter: "time",
             reason: "the time must be finite (s)",
+        })
+    }
+}
+
+/// The layer the free surface lies in over a body: `η ∈ [mid − reach, mid + reach]` over the
+/// horizontal disc of the body's bounding radius about its centroid.
+#[derive(Clone, Copy, Debug)]
+struct Layer<T: Real> {
+    mid: T,
+    reach: T,
+}
+
+impl<T: Real> Layer<T> {
+    /// From the surface's [`elevation_range`](WaterSurface::elevation_range) over the disc of
+    /// `radius` about the centroid of `frame` at `time` (when it gives a finite one), its
+    /// half thickness widened by `64ε` of the larger end to cover the round-off of the
+    /// surface's own sums: every evaluated elevation lies within it.
+    fn of(
+        surface: &dyn WaterSurface<T>,
+        water: &Water<T>,
+        frame: &Frame<T>,
+        radius: T,
+        time: T,
+    ) -> Option<Self> {
+        let (low, high) = surface.elevation_range(water, &frame.center_of_mass, radius, time)?;
+        if !(low.is_finite() && high.is_finite() && low <= high) {
+            return None;
+        }
+        let half = T::from_f64_lossy(0.5);
+        let widen = low.abs().max(high.abs()) * T::default_epsilon() * T::from_f64_lossy(64.0);
+        Some(Layer {
+            mid: (low + high) * half,
+            reach: (high - low) * half + widen,
         })
     }
 }
@@ -618,7 +668,27 @@ mod tests {
         )
         .unwrap();
         let unbounded = SurfaceFn(|q: &Point3<f64>, t: f64| 0.05 * (1.3 * q.x - t).cos());
-        let surfaces: [&dyn WaterSurface<f64>; 4] = [&airy, &grid, &FlatWithBound, &unbounded];
+        // Long and high against the bodies: a thin layer far off the still plane.
+        let swell = AiryWaves::new(
+            alloc::vec![
+                AiryComponent {
+                    amplitude: 0.5,
+                    wavelength: 40.0,
+                    direction: Vector3::x(),
+                    phase: 0.0,
+                },
+                AiryComponent {
+                    amplitude: 0.2,
+                    wavelength: 25.0,
+                    direction: Vector3::new(0.6, 0.0, 0.8),
+                    phase: 1.0,
+                },
+            ],
+            Some(30.0),
+        )
+        .unwrap();
+        let surfaces: [&dyn WaterSurface<f64>; 5] =
+            [&airy, &grid, &FlatWithBound, &unbounded, &swell];
         let water = Water::default();
         for mesh in &meshes {
             let mesh: &Mesh<f64> = mesh;

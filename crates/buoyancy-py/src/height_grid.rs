@@ -191,6 +191,24 @@ impl WaterSurface<f64> for GridOnWater<'_> {
     fn elevation_bound(&self) -> Option<f64> {
         self.grid.elevation_bound()
     }
+
+    /// The grid's range over the disc about the center's still-plane point read at the grid's
+    /// axes: dropping a coordinate brings no two points further apart, so the points of the
+    /// disc are read within the same radius.
+    fn elevation_range(
+        &self,
+        water: &Water<f64>,
+        center: &Point3<f64>,
+        radius: f64,
+        time: f64,
+    ) -> Option<(f64, f64)> {
+        let [u, v] = self.axes;
+        let q = water.project(center);
+        // The grid's own plane is z = 0: a water of up normal z reads its points as they are.
+        let flat = Water::new(water.density(), water.gravity(), Vector3::z(), 0.0).ok()?;
+        self.grid
+            .elevation_range(&flat, &Point3::new(q[u], q[v], 0.0), radius, time)
+    }
 }
 
 #[pymethods]

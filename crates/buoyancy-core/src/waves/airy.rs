@@ -189,6 +189,25 @@ impl<T: Real> AiryWaves<T> {
     }
 }
 
+/// The least and the greatest of `cos` over `[theta − spread, theta + spread]` (`spread ≥ 0`):
+/// `1` where the interval holds a multiple of `2π`, `−1` where it holds an odd multiple of `π`,
+/// else the larger or smaller of the ends.
+fn cos_range<T: Real>(theta: T, spread: T) -> (T, T) {
+    let one = T::one();
+    let pi = T::pi();
+    // A NaN spread reaches everything too.
+    if spread.partial_cmp(&pi) != Some(core::cmp::Ordering::Less) {
+        return (-one, one);
+    }
+    let two_pi = pi + pi;
+    let (a, b) = (theta - spread, theta + spread);
+    let (ca, cb) = (a.cos(), b.cos());
+    let holds = |shift: T| two_pi * ((a - shift) / two_pi).ceil() + shift <= b;
+    let high = if holds(T::zero()) { one } else { ca.max(cb) };
+    let low = if holds(pi) { -one } else { ca.min(cb) };
+    (low, high)
+}
+
 /// `cosh k(z+h)/cosh kh`, the decay with depth of linear waves' dynamic pressure, at height
 /// `z ≤ 0` (clamped to the bottom `−h`): `(e^{kz} + e^{−k(z+2h)})/(1 + e^{−2kh})`; `e^{kz}` in
 /// deep water.
@@ -263,6 +282,35 @@ impl<T: Real> WaterSurface<T> for AiryWaves<T> {
     /// `Σ aᵢ`.
     fn elevation_bound(&self) -> Option<T> {
         Some(amplitude_sum(&self.components))
+    }
+
+    /// Per component, `a·cos θ` over the phases the disc spans, `θ(center) ± k·radius`, at
+    /// its extremes (`±a` where a crest or a trough is within reach); summed, and widened by the
+    /// round-off of the phases at the points, `64ε·(1 + |θ| + k·radius)` per unit amplitude.
+    fn elevation_range(
+        &self,
+        water: &Water<T>,
+        center: &Point3<T>,
+        radius: T,
+        time: T,
+    ) -> Option<(T, T)> {
+        let Ok(waves) = resolve(&self.components, water, self.depth) else {
+            let bound = amplitude_sum(&self.components);
+            return Some((-bound, bound));
+        };
+        let q = water.project(center).coords;
+        let (mut low, mut high, mut slack) = (T::zero(), T::zero(), T::zero());
+        for w in &waves {
+            let theta = w.phase_at(&q, time);
+            let spread = w.wavenumber * radius.abs();
+            let (lo, hi) = cos_range(theta, spread);
+            low += w.amplitude * lo;
+            high += w.amplitude * hi;
+            slack += w.amplitude * (T::one() + theta.abs() + spread);
+        }
+        let slack = slack * T::default_epsilon() * T::from_f64_lossy(64.0);
+        let range = (low - slack, high + slack);
+        (range.0.is_finite() && range.1.is_finite()).then_some(range)
     }
 
     /// The orbital velocity of [`AiryWaves::water_motion`].
@@ -416,5 +464,60 @@ mod tests {
                 .norm()
         };
         assert!((at(-3.0) / at(0.0) - (-3.0 * k).exp()).abs() < 1e-12);
+    }
+
+    /// The range over a disc holds every elevation sampled in it, and for long waves is much
+    /// thinner than the amplitude sum; its ends are reached (within the sampling) for one
+    /// component.
+    #[test]
+    fn elevation_range_holds_the_disc() {
+        let water = Water::<f64>::default();
+        let sea = AiryWaves::new(
+            (0..6)
+                .map(|i| AiryComponent {
+                    amplitude: 0.1 + 0.05 * i as f64,
+                    wavelength: 2.0 + 7.0 * i as f64,
+                    direction: Vector3::new((i as f64).cos(), 0.0, (i as f64).sin()),
+                    phase: 0.3 * i as f64,
+                })
+                .collect(),
+            None,
+        )
+        .unwrap();
+        let one = AiryWaves::new(vec![wave(10.0)], Some(8.0)).unwrap();
+        let sum = amplitude_sum(sea.components());
+        for (k, radius) in [0.0, 0.05, 0.4, 1.5, 6.0].into_iter().enumerate() {
+            for surface in [&sea, &one] {
+                let center = Point3::new(3.0 * k as f64 - 5.0, -0.7, 1.1 * k as f64);
+                let time = 0.9 * k as f64;
+                let (low, high) = surface
+                    .elevation_range(&water, &center, radius, time)
+                    .unwrap();
+                let points: Vec<Point3<f64>> = (0..2000)
+                    .map(|j| {
+                        let (r, a) = (radius * ((j % 40) as f64 / 39.0), j as f64 * 0.61);
+                        Point3::new(center.x + r * a.cos(), 0.0, center.z + r * a.sin())
+                    })
+                    .collect();
+                let mut eta = vec![0.0; points.len()];
+                surface.elevations(&water, &points, time, &mut eta).unwrap();
+                let (lo, hi) = eta
+                    .iter()
+                    .fold((f64::MAX, f64::MIN), |(l, h), e| (l.min(*e), h.max(*e)));
+                assert!(low <= lo && hi <= high, "{radius}: {low} {lo} {hi} {high}");
+                if core::ptr::eq(surface, &one) {
+                    // One component: the ends are the extremes over the disc.
+                    assert!(
+                        lo - low < 2e-3 && high - hi < 2e-3,
+                        "{low} {lo} {hi} {high}"
+                    );
+                }
+            }
+        }
+        // Waves long against the disc: a thin layer.
+        let (low, high) = sea
+            .elevation_range(&water, &Point3::origin(), 0.05, 0.0)
+            .unwrap();
+        assert!(high - low < 0.25 * sum, "{low} {high} {sum}");
     }
 }

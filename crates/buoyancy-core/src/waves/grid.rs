@@ -129,6 +129,40 @@ impl<T: Real> HeightGrid<T> {
         &self.heights
     }
 
+    /// The grid coordinates `(s, t) = G·(d·c, d·r)` of a point `q`, `d = q − origin`, as two
+    /// dot products: the vectors `∇s` and `∇t`, and the origin, in `f64`.
+    fn grid_axes(&self) -> (Vector3<f64>, Vector3<f64>, Vector3<f64>) {
+        let g = &self.to_grid;
+        let (c, r) = (&self.column_step, &self.row_step);
+        let along_s = (c * g[(0, 0)] + r * g[(0, 1)]).map(T::to_f64);
+        let along_t = (c * g[(1, 0)] + r * g[(1, 1)]).map(T::to_f64);
+        (along_s, along_t, self.origin.coords.map(T::to_f64))
+    }
+
+    /// Along an axis of `n` nodes, the nodes of the cells [`HeightGrid::cell`] finds for the
+    /// coordinates within `spread` of `x`: the first (in `0..n`) and how many, counted on
+    /// with wrapping (at most `n`). Widened by a node's `10⁻⁹` each way against the
+    /// round-off of the points' coordinates. `None` for a coordinate that is not finite.
+    fn nodes_within(&self, x: f64, spread: f64, n: usize) -> Option<(usize, usize)> {
+        let widen = spread + 1e-9 * (1.0 + x.abs());
+        let (low, high) = (x - widen, x + widen);
+        if !(low.is_finite() && high.is_finite()) {
+            return None;
+        }
+        if self.periodic {
+            let (first, last) = (floor(low), floor(high) + 1.0);
+            if last - first + 1.0 >= n as f64 {
+                return Some((0, n));
+            }
+            let (first, _, _) = self.cell(first, n);
+            Some((first, (last - floor(low)) as usize + 1))
+        } else {
+            let (first, _, _) = self.cell(low, n);
+            let (last, next, _) = self.cell(high, n);
+            Some((first, next.max(last) - first + 1))
+        }
+    }
+
     /// The height at the point of grid coordinates `(s, t)` (in steps from the origin),
     /// interpolated in `f64`.
     #[inline(always)]
@@ -195,12 +229,7 @@ impl<T: Real> WaterSurface<T> for HeightGrid<T> {
         _: T,
         elevations: &mut [T],
     ) -> Result<(), Error> {
-        // Grid coordinates `(s, t) = G·(d·c, d·r)` for `d = q − origin`, as two dot products.
-        let g = &self.to_grid;
-        let (c, r) = (&self.column_step, &self.row_step);
-        let along_s = (c * g[(0, 0)] + r * g[(0, 1)]).map(T::to_f64);
-        let along_t = (c * g[(1, 0)] + r * g[(1, 1)]).map(T::to_f64);
-        let origin = self.origin.coords.map(T::to_f64);
+        let (along_s, along_t, origin) = self.grid_axes();
         for (eta, q) in elevations.iter_mut().zip(points) {
             let d = q.coords.map(T::to_f64) - origin;
             *eta = self.at(d.dot(&along_s), d.dot(&along_t));
@@ -211,6 +240,41 @@ impl<T: Real> WaterSurface<T> for HeightGrid<T> {
     /// The largest `|height|` of the grid: bilinear interpolation stays within the nodes' range.
     fn elevation_bound(&self) -> Option<T> {
         Some(self.bound)
+    }
+
+    /// The least and the greatest height of the nodes of the cells the disc can reach (its
+    /// grid coordinates lie within `s₀ ± R·|∇s|`, `t₀ ± R·|∇t|`): bilinear interpolation stays
+    /// within the range of its cell's four nodes. Up to 4,096 nodes are read; for a disc
+    /// wider than that, `±` the grid's bound.
+    fn elevation_range(
+        &self,
+        water: &Water<T>,
+        center: &Point3<T>,
+        radius: T,
+        _: T,
+    ) -> Option<(T, T)> {
+        let whole = Some((-self.bound, self.bound));
+        let (along_s, along_t, origin) = self.grid_axes();
+        let d = water.project(center).coords.map(T::to_f64) - origin;
+        let r = radius.to_f64().abs();
+        let columns = self.nodes_within(d.dot(&along_s), r * along_s.norm(), self.columns)?;
+        let rows = self.nodes_within(d.dot(&along_t), r * along_t.norm(), self.rows)?;
+        if columns.1 * rows.1 > 4096 {
+            return whole;
+        }
+        let (mut low, mut high) = (
+            T::from_f64_lossy(f64::INFINITY),
+            -T::from_f64_lossy(f64::INFINITY),
+        );
+        for j in 0..rows.1 {
+            let row = (rows.0 + j) % self.rows * self.columns;
+            for i in 0..columns.1 {
+                let h = self.heights[row + (columns.0 + i) % self.columns];
+                low = low.min(h);
+                high = high.max(h);
+            }
+        }
+        Some((low, high))
     }
 }
 
@@ -276,5 +340,57 @@ mod tests {
         assert!(g.set_heights(&[1.0; 5]).is_err());
         assert!(g.set_heights(&[f64::NAN; 6]).is_err());
         assert!((eta(&g, 1.3, 0.4) - 1.0).abs() < 1e-15);
+    }
+
+    /// The range over a disc holds every elevation sampled in it, on periodic and clamped
+    /// grids, across the wrap and beyond the edges; a small disc on a smooth field gets a thin
+    /// range, a disc wider than the grid its whole range.
+    #[test]
+    fn elevation_range_holds_the_disc() {
+        let n = 48;
+        let heights: Vec<f64> = (0..n * n)
+            .map(|k| {
+                // Smooth across the wrap too.
+                let t = 2.0 * core::f64::consts::PI / n as f64;
+                let (i, j) = ((k % n) as f64, (k / n) as f64);
+                0.3 * (t * i).sin() + 0.2 * (t * (j + i)).cos()
+            })
+            .collect();
+        let water = Water::<f64>::default();
+        for periodic in [true, false] {
+            let g = HeightGrid::new(
+                heights.clone(),
+                n,
+                n,
+                Point3::new(-3.0, 0.0, -2.0),
+                Vector3::new(0.25, 0.0, 0.05),
+                Vector3::new(-0.03, 0.0, 0.2),
+                periodic,
+            )
+            .unwrap();
+            for k in 0..40 {
+                let center = Point3::new(-9.0 + 0.61 * k as f64, 0.4, -7.0 + 0.47 * k as f64);
+                let radius = [0.0, 0.1, 0.7, 2.5][k % 4];
+                let (low, high) = g.elevation_range(&water, &center, radius, 0.0).unwrap();
+                let points: Vec<Point3<f64>> = (0..800)
+                    .map(|j| {
+                        let (r, a) = (radius * ((j % 20) as f64 / 19.0), j as f64 * 0.77);
+                        Point3::new(center.x + r * a.cos(), 0.0, center.z + r * a.sin())
+                    })
+                    .collect();
+                let mut eta = vec![0.0; points.len()];
+                g.elevations(&water, &points, 0.0, &mut eta).unwrap();
+                for e in &eta {
+                    assert!(low <= *e && *e <= high, "{periodic} {k}: {low} {e} {high}");
+                }
+                if radius <= 0.1 {
+                    assert!(high - low < 0.2, "{periodic} {k}: {low} {high}");
+                }
+            }
+            let everything = g
+                .elevation_range(&water, &Point3::origin(), 100.0, 0.0)
+                .unwrap();
+            assert_eq!(everything, (-g.bound, g.bound));
+        }
     }
 }

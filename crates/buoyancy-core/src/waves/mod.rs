@@ -68,6 +68,24 @@ pub trait WaterSurface<T: Real>: Sync {
         None
     }
 
+    /// Bounds `(low, high)` on `η` (m) over the horizontal disc of `radius` (m) about the
+    /// horizontal position of `center` (world frame) at `time` (s), if the surface knows them:
+    /// the layer [`Mesh::buoyancy_in_waves`] walks its hierarchy against, tighter than
+    /// [`elevation_bound`](Self::elevation_bound) where the waves are long against the body.
+    /// The default is `(−b, b)` with `b` the elevation bound. [`AiryWaves`] bound each
+    /// component over the phases the disc spans, [`HeightGrid`] takes the extremes of the
+    /// samples around the disc. Bounds that are exceeded give wrong results.
+    fn elevation_range(
+        &self,
+        water: &Water<T>,
+        center: &Point3<T>,
+        radius: T,
+        time: T,
+    ) -> Option<(T, T)> {
+        let _ = (water, center, radius, time);
+        self.elevation_bound().map(|b| (-b, b))
+    }
+
     /// The velocity of the water at the world point `point` at `time` (m/s, world frame), if
     /// the surface models it: what a floating body's damping is taken relative to (see
     /// [`controller`](crate::controller)). `None` (the default): the water does not move with
