@@ -108,10 +108,10 @@ _DYNAMIC = rapier3d.RigidBodyType.DYNAMIC
 # A body's state is read from its whole serialisation (see _BODY_BYTES below) or, should that
 # format differ, with the getters: the cheapest way to a rapier vector's numbers is then its
 # serialised float32s, read by NumPy for every body at once (the unbound methods of the classes,
-# no bound method made per call). The layout is
-# rapier3d's ``to_bytes`` format (an 8-byte header, then the float32s: a rotation x, y, z, w
-# before the translation for an Isometry3), checked once at import against values this module
-# builds (see _bytes_layout_ok); if it ever differs, the numbers are read with ``to_tuple``.
+# no bound method made per call). The layout is rapier3d's ``to_bytes`` format (an 8-byte
+# header, then the float32s: a rotation x, y, z, w before the translation for an Isometry3),
+# checked once at import against values this module builds (see _bytes_layout_ok); if it ever
+# differs, the numbers are read with ``to_tuple``.
 _ISOMETRY_BYTES = rapier3d.Isometry3.to_bytes
 _POINT_BYTES = rapier3d.Point3.to_bytes
 _VEC_BYTES = rapier3d.Vec3.to_bytes
@@ -658,10 +658,10 @@ def _scalars(rb: Any) -> tuple[float, float, bool, bool, int]:
 
 def _columns(record: np.ndarray, scalars: list[tuple[float, float, bool, bool, int]], keys: list[bytes]) -> _State:
     """The state as :meth:`FloatingBodies._read` returns it, from :data:`_RECORD` s and rows of
-    scalars: the record's fields by name (float32s, as rapier has them; the rotation
-    ``(x, y, z, w)``); the masses and gravity scales (float64), whether each body is dynamic and
-    enabled and whether it sleeps (bool) and its locked axes (rapier's bits) by name; and the
-    mass properties' keys."""
+    scalars: the record's fields by name (rapier's float32s, in float32 or float64 arrays; the
+    rotation ``(x, y, z, w)``); the masses and gravity scales (float64), whether each body is
+    dynamic and enabled and whether it sleeps (bool) and its locked axes (rapier's bits) by name;
+    and the mass properties' keys."""
     table = np.array(scalars, dtype=np.float64).reshape(-1, 5)
     columns = {
         "mass": table[:, _MASS],
