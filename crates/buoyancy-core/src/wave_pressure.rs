@@ -25,13 +25,16 @@
 //! hierarchy is walked against that layer: a node more than `b` above its middle is dry and
 //! skipped; a leaf within reach of the layer has its triangles cut and integrated one by one;
 //! a node more than `b` below is under water all over, and is summed without visiting its
-//! triangles' corners. For waves long against the body the layer is thin wherever it lies. Every sum of a triangle is
-//! linear in its vertex heights but one (see `vertex_terms`): per vertex, twelve coefficients
-//! summed over the triangles around it give the linear part of every triangle around a *deep*
-//! vertex (more than `b` below the middle of the layer) in one multiply-add each, the crossed leaves
-//! take their own triangles' shares back out, and the submerged nodes add the quadratic term
-//! triangle by triangle, three heights each. The surface is evaluated at every vertex that may
-//! be wet: with the pressure `ρg(η − z)` at every depth, every wet vertex's `η` counts.
+//! triangles' corners. For waves long against the body the layer is thin wherever it lies.
+//!
+//! Every sum of a triangle is linear in its vertex heights but one (see `vertex_terms`): per
+//! vertex, twelve coefficients summed over the triangles around it give the linear part of
+//! every triangle around a *wet* vertex (below the free surface) in one multiply-add each. The
+//! triangles under water all over, in the submerged nodes or in the crossed leaves, then add
+//! only their quadratic term, three heights each; the triangles the surface cuts are
+//! integrated whole and take their shares back out of their wet corners' sums. The surface is
+//! evaluated at every vertex that may be wet: with the pressure `ρg(η − z)` at every depth,
+//! every wet vertex's `η` counts.
 //!
 //! The result is a [`Buoyancy`]: `submerged_volume` is the volume implied by the vertical force,
 //! `n·F/(ρ·g)`; `center_of_buoyancy` is a point of the force's line of action (the central axis
@@ -44,6 +47,7 @@ use alloc::vec::Vec;
 
 use nalgebra::{Point3, Vector3};
 
+use crate::clip::{TriangleClass, classify};
 use crate::frame::Frame;
 use crate::hierarchy::Visit;
 use crate::reduction::Sums;
@@ -140,7 +144,7 @@ impl<T: Real> Mesh<T> {
                 .surface(&frame, water, Method::ExactSurface, true, parallel)
                 .checked();
         }
-        let (heights, deep) =
+        let (heights, wet) =
             self.heights_in_waves(&frame, water, surface, time, layer, parallel)?;
         let n = frame.normal_local;
         let infinite = T::from_f64_lossy(f64::INFINITY);
@@ -163,12 +167,12 @@ impl<T: Real> Mesh<T> {
                 }
                 Visit::CrossedLeaf { triangles } => {
                     for i in triangles {
-                        self.crossed_triangle(walk, &frame, i, &heights, layer);
+                        self.crossed_triangle(walk, &n, i, &heights);
                     }
                 }
             },
         );
-        let [force6, torque24, moment24] = walk.linear.merge(deep).surface_terms(&n);
+        let [force6, torque24, moment24] = walk.linear.merge(wet).surface_terms(&n);
         let mut sums = walk.triangles;
         sums.force6 += force6;
         sums.torque24 += torque24;
@@ -192,48 +196,43 @@ impl<T: Real> Mesh<T> {
         q * n.dot(&normal.unit) * normal.double_area
     }
 
-    /// Integrates the wetted part of leaf-order triangle `i` of a leaf the layer of the waves
-    /// crosses, and takes its share out of the per-vertex sums of its deep corners (which sum
-    /// every triangle around them).
+    /// Leaf-order triangle `i` of a leaf the layer of the waves crosses. Under water all over,
+    /// its linear part is in the sums of its corners (all wet): only its quadratic term is
+    /// added. Cut by the surface, its wetted part is integrated and its share taken out of the
+    /// sums of its wet corners (which sum every triangle around them). Dry, it adds nothing
+    /// (a corner of height zero adds nothing to the sums).
     #[inline(always)]
-    fn crossed_triangle(
-        &self,
-        walk: &mut WaveWalk<T>,
-        frame: &Frame<T>,
-        i: usize,
-        heights: &[T],
-        layer: Option<Layer<T>>,
-    ) {
+    fn crossed_triangle(&self, walk: &mut WaveWalk<T>, n: &Vector3<T>, i: usize, heights: &[T]) {
         let [a, b, c] = self.leaf_triangles[i];
-        let v = self.corners(i);
         let h = [
             heights[a as usize],
             heights[b as usize],
             heights[c as usize],
         ];
-        walk.triangles
-            .add_wetted_part(&frame.normal_local, v, h, true, &self.double_areas[i]);
-        let Some(Layer { mid, reach }) = layer else {
-            return;
-        };
-        // Heights above the middle of the layer, as the vertex pass and the walk take them.
-        let n = &frame.normal_local;
-        let height = frame.height - mid;
-        let still = v.map(|v| n.dot(&v) + height);
-        if still.iter().all(|s| *s >= -reach) {
-            return;
-        }
-        let area2 = (v[1] - v[0]).cross(&(v[2] - v[0]));
-        let sum = v[0] + v[1] + v[2];
-        for k in 0..3 {
-            if still[k] < -reach {
-                walk.linear.remove_share(h[k], &v[k], &sum, &area2);
+        match classify(&h) {
+            TriangleClass::Submerged => {
+                walk.quadratic += self.quadratic_term(n, i, heights);
+                walk.triangles.counts.full += 1;
+                walk.triangles.counts.wetted_area2 += self.double_areas[i];
             }
+            TriangleClass::Cut => {
+                let v = self.corners(i);
+                walk.triangles
+                    .add_wetted_part(n, v, h, true, &self.double_areas[i]);
+                let area2 = (v[1] - v[0]).cross(&(v[2] - v[0]));
+                let sum = v[0] + v[1] + v[2];
+                for k in 0..3 {
+                    if h[k] < T::zero() {
+                        walk.linear.remove_share(h[k], &v[k], &sum, &area2);
+                    }
+                }
+            }
+            TriangleClass::Dry => {}
         }
     }
 
     /// The heights of the vertices above the free surface (see [`Mesh::heights_in_chunk`]),
-    /// and the linear sums of the deep vertices, chunk by chunk (in parallel with `parallel`),
+    /// and the linear sums of the wet vertices, chunk by chunk (in parallel with `parallel`),
     /// merged in order.
     fn heights_in_waves(
         &self,
@@ -272,20 +271,19 @@ impl<T: Real> Mesh<T> {
                 .map(chunk)
                 .collect()
         };
-        let mut deep = LinearSums::zero();
+        let mut wet = LinearSums::zero();
         for sums in chunks {
-            deep = deep.merge(sums?);
+            wet = wet.merge(sums?);
         }
-        Ok((heights, deep))
+        Ok((heights, wet))
     }
 
     /// For the vertices from `first` on, one per entry of `heights`: their heights
     /// `n·x − level − η` above the free surface, and the linear sums (see `vertex_terms`) of
-    /// the deep ones, more than the `layer`'s reach below its middle, every triangle around
-    /// which is under water. A vertex more than the reach plus the longest edge above the
-    /// middle belongs to dry triangles only: it gets a positive height (its height above the
-    /// layer) and the surface is not evaluated there. With no `layer` every vertex is
-    /// evaluated and none is deep.
+    /// the wet ones (below the surface). A vertex more than the `layer`'s reach plus the
+    /// longest edge above its middle belongs to dry triangles only: it gets a positive height
+    /// (its height above the layer) and the surface is not evaluated there. With no `layer`
+    /// every vertex is evaluated.
     #[allow(clippy::too_many_arguments)]
     fn heights_in_chunk(
         &self,
@@ -300,11 +298,7 @@ impl<T: Real> Mesh<T> {
         let n = &frame.normal_local;
         let vertices = &self.vertices[first..first + heights.len()];
         let count = heights.len();
-        let (mut points, mut wet, mut deep) = (
-            Vec::with_capacity(count),
-            Vec::with_capacity(count),
-            Vec::with_capacity(count),
-        );
+        let (mut points, mut wet) = (Vec::with_capacity(count), Vec::with_capacity(count));
         // The heights above the layer's middle are taken as the walk takes them, `n·x + h_c'`.
         let layer_height = layer.map(|l| frame.height - l.mid);
         for (j, (h, v)) in heights.iter_mut().zip(vertices).enumerate() {
@@ -323,9 +317,6 @@ impl<T: Real> Mesh<T> {
             }
             points.push(frame.center_of_mass + frame.rotation * v - frame.normal * still);
             wet.push(j as u32);
-            if above_middle < -reach {
-                deep.push(j as u32);
-            }
         }
         let mut elevations = alloc::vec![T::zero(); points.len()];
         surface.elevations(water, &points, time, &mut elevations)?;
@@ -339,8 +330,11 @@ impl<T: Real> Mesh<T> {
             heights[j as usize] -= *eta;
         }
         let mut sums = LinearSums::zero();
-        for &j in &deep {
-            sums.add(heights[j as usize], &self.vertex_terms[first + j as usize]);
+        for &j in &wet {
+            let h = heights[j as usize];
+            if h < T::zero() {
+                sums.add(h, &self.vertex_terms[first + j as usize]);
+            }
         }
         Ok(sums)
     }
@@ -520,9 +514,9 @@ fn surface_reach<T: Real>(surface: &dyn WaterSurface<T>) -> Option<T> {
         .map(|b| b + b * T::default_epsilon() * T::from_f64_lossy(64.0))
 }
 
-/// The walk's running sums under waves: the triangles of the crossed leaves integrated one by
-/// one, the linear terms taken back from the deep vertices for them, and the quadratic term of
-/// the triangles of the submerged nodes.
+/// The walk's running sums under waves: the cut triangles of the crossed leaves integrated one
+/// by one, the linear terms taken back from the wet vertices for them, and the quadratic term
+/// of the triangles under water all over.
 #[derive(Clone, Copy)]
 struct WaveWalk<T: Real> {
     triangles: SurfaceSums<T>,
