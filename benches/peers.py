@@ -74,8 +74,8 @@ spacing over 128 m. For each mesh and sea, the median time per evaluation (timed
   timed part is all of that, the elevation call included;
 * the elevation call alone, ``water.elevation`` at the posed vertices (moved beforehand): the
   part of the numpy column spent in the wheel. Ours evaluates the surface only at the vertices
-  that may be wet (at most the surface's bound on ``|η|`` plus the longest edge above the still
-  plane), numpy at every vertex, as Kerner's scheme does.
+  that may be wet (at most the top of the surface's range over the body plus the longest edge
+  above the still plane), numpy at every vertex, as Kerner's scheme does.
 
 Both sides integrate the same piecewise-linear pressure exactly, so they should agree to
 round-off: the table gives the largest, over the poses, ``|ΔF| / (ρ g V)`` and ``|Δτ| / (ρ g V R)``
@@ -738,7 +738,8 @@ def main_waves(args: argparse.Namespace, header: list[str], before: str) -> int:
         "at the vertices, each triangle cut where its linear h is zero, the linear pressure ρg(−h) integrated",
         "in closed form over each wetted piece). Median time per evaluation; the numpy column includes its",
         "call to `water.elevation` at every vertex (ours), timed alone in the next column; ours evaluates η",
-        "only at the vertices that may be wet (below the bound on |η| plus the longest edge). Differences: the",
+        "only at the vertices that may be wet (below the top of the surface's range over the body plus the",
+        "longest edge). Differences: the",
         "largest over the poses of |ΔF| over ρg times the body's volume V and of |Δτ| (about the center of",
         "mass) over ρgV times its bounding radius R. One thread everywhere. A busy machine interrupts a batch",
         "of 100 evaluations more often than a single one, whose median then misses the interruptions: under",
