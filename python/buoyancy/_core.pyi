@@ -57,6 +57,7 @@ __all__ = [
     "Waterplane",
     "Waves",
     "_rapier_bodies",
+    "_world_inverse_inertias",
     "cube",
     "load",
     "torus",
@@ -923,3 +924,8 @@ def _rapier_bodies(
 ) -> tuple[npt.NDArray[np.float64], _Float32Array, npt.NDArray[np.uint8], list[bytes]] | None:
     """The state of rapier3d's rigid bodies from their ``RigidBody.to_bytes`` (buoyancy.rapier's
     bulk read): values (N, 18), wrench (N, 6), flags (N, 3) and the mass properties' bytes."""
+
+def _world_inverse_inertias(quaternions: npt.ArrayLike, inverse_inertias: npt.ArrayLike) -> npt.NDArray[np.float64]:
+    """The world inverse inertia tensors R·I⁻¹·Rᵀ (N, 3, 3) of bodies turned by the unit
+    quaternions (x, y, z, w) (N, 4) from their inverse inertias in their own frames (N, 3, 3); a
+    non-finite quaternion counts as no rotation (buoyancy.rapier's glue)."""

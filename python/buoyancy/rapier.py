@@ -92,7 +92,16 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ._core import Controller, DampingCoefficients, Equilibrium, FloatReport, Mesh, Water, _rapier_bodies
+from ._core import (
+    Controller,
+    DampingCoefficients,
+    Equilibrium,
+    FloatReport,
+    Mesh,
+    Water,
+    _rapier_bodies,
+    _world_inverse_inertias,
+)
 
 try:
     import rapier3d
@@ -230,40 +239,6 @@ def _water_for_gravity(gravity: npt.ArrayLike) -> Water:
     if norm == 0.0:
         return Water(gravity=0.0)
     return Water(gravity=norm, normal=tuple(-g / norm))
-
-
-def _quaternion_to_matrix() -> np.ndarray:
-    """The (16, 9) matrix that maps the products ``q_a q_b`` of a unit quaternion ``(x, y, z, w)``
-    (flattened, ``a`` major) to its rotation matrix (flattened, row major)."""
-    c = np.zeros((4, 4, 3, 3))
-    x, y, z, w = range(4)
-    # R = (w² − |v|²) I + 2 v vᵀ + 2 w [v]×, each term a product of two components.
-    for i, a in enumerate((x, y, z)):
-        c[w, w, i, i] += 1.0
-        for b in (x, y, z):
-            c[b, b, i, i] -= 1.0
-        for j, b in enumerate((x, y, z)):
-            c[a, b, i, j] += 2.0
-    for (i, j), (k, sign) in {
-        (0, 1): (z, -1),
-        (0, 2): (y, 1),
-        (1, 0): (z, 1),
-        (1, 2): (x, -1),
-        (2, 0): (y, -1),
-        (2, 1): (x, 1),
-    }.items():
-        c[w, k, i, j] += sign
-        c[k, w, i, j] += sign
-    return c.reshape(16, 9)
-
-
-_QUATERNION_TO_MATRIX = _quaternion_to_matrix()
-
-
-def _rotation_matrices(q: np.ndarray) -> np.ndarray:
-    """The rotation matrices (N, 3, 3) of unit quaternions (N, 4) ``(x, y, z, w)``."""
-    n = len(q)
-    return ((q[:, :, None] * q[:, None, :]).reshape(n, 16) @ _QUATERNION_TO_MATRIX).reshape(n, 3, 3)
 
 
 def _local_mass_properties(rb: Any) -> tuple[float, np.ndarray]:
@@ -620,15 +595,10 @@ class FloatingBodies:
         axes) from the mass properties in each body's frame."""
         registered = self._bodies
         quaternions = np.asarray(record["rotation"], dtype=np.float64)
-        if not np.isfinite(quaternions).all():
-            # A body whose rotation is not finite gets no force (the controller says so); its
-            # inertia must still be finite.
-            finite: np.ndarray = np.all(np.isfinite(quaternions), axis=1)
-            rotations = _rotation_matrices(np.where(finite[:, None], quaternions, (0.0, 0.0, 0.0, 1.0)))
-        else:
-            rotations = _rotation_matrices(quaternions)
         inverse_masses, local_inverse_inertias = registered.mass_arrays()
-        inverse_inertias = rotations @ local_inverse_inertias @ rotations.transpose(0, 2, 1)
+        # R·I⁻¹·Rᵀ for every body in one call; a body whose rotation is not finite gets no force
+        # (the controller says so), and its inertia stays finite.
+        inverse_inertias = _world_inverse_inertias(quaternions, local_inverse_inertias)
         locked = scalars["locked"]
         if locked.any():
             free = ((locked.astype(np.int64)[:, None] & _LOCK_BITS) == 0).astype(np.float64)

@@ -8,7 +8,7 @@ import struct
 import numpy as np
 import pytest
 
-from buoyancy._core import _rapier_bodies
+from buoyancy._core import _rapier_bodies, _world_inverse_inertias
 
 HEADER = b"RPYS\x01\x00\x00\x00"
 
@@ -79,3 +79,42 @@ def test_no_bodies_and_not_bytes() -> None:
     assert parsed is not None and [a.shape for a in parsed[:3]] == [(0, 18), (0, 6), (0, 3)] and parsed[3] == []
     with pytest.raises(TypeError, match=r"^blobs\[0\]: expected bytes, got str"):
         _rapier_bodies(["abc"], HEADER)  # type: ignore[list-item]
+
+
+def rotation_matrix(q: np.ndarray) -> np.ndarray:
+    """The rotation matrix of the unit quaternion ``(x, y, z, w)``, by the textbook formula."""
+    x, y, z, w = q
+    return np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+        ]
+    )
+
+
+def test_world_inverse_inertias_turn_the_local_tensors() -> None:
+    rng = np.random.default_rng(7)
+    quaternions = rng.normal(size=(50, 4))
+    quaternions /= np.linalg.norm(quaternions, axis=1)[:, None]
+    quaternions[3] = (np.nan, 0.0, 0.0, 1.0)  # counts as no rotation
+    local = rng.normal(size=(50, 3, 3))
+    local = local @ local.transpose(0, 2, 1)  # symmetric, as inverse inertias are
+    world = _world_inverse_inertias(quaternions, local)
+    assert world.shape == (50, 3, 3) and world.dtype == np.float64
+    for i, (q, tensor) in enumerate(zip(quaternions, local, strict=True)):
+        if i == 3:
+            np.testing.assert_array_equal(world[i], tensor)
+            continue
+        r = rotation_matrix(q)
+        np.testing.assert_allclose(world[i], r @ tensor @ r.T, rtol=0, atol=1e-13 * np.abs(tensor).max())
+        # The eigenvalues (the principal inverse inertias) do not turn.
+        np.testing.assert_allclose(np.linalg.eigvalsh(world[i]), np.linalg.eigvalsh(tensor), atol=1e-12)
+    assert _world_inverse_inertias(np.zeros((0, 4)), np.zeros((0, 3, 3))).shape == (0, 3, 3)
+
+
+def test_world_inverse_inertias_name_the_bad_argument() -> None:
+    with pytest.raises(ValueError, match="inverse_inertias"):
+        _world_inverse_inertias(np.zeros((2, 4)), np.zeros((3, 3, 3)))
+    with pytest.raises(ValueError, match="quaternions"):
+        _world_inverse_inertias(np.zeros((2, 3)), np.zeros((2, 3, 3)))

@@ -71,6 +71,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(shapes::torus_knot, m)?)?;
     m.add_function(wrap_pyfunction!(shapes::wigley_hull, m)?)?;
     m.add_function(wrap_pyfunction!(rapier_bodies::rapier_bodies, m)?)?;
+    m.add_function(wrap_pyfunction!(rapier_bodies::world_inverse_inertias, m)?)?;
     m.add("METHODS", PyTuple::new(py, Method::ALL.map(Method::name))?)?;
     m.add("QUATERNION_TOLERANCE", convert::QUATERNION_TOLERANCE)?;
     m.add("MATRIX_TOLERANCE", convert::MATRIX_TOLERANCE)?;

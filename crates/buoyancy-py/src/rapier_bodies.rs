@@ -1,16 +1,22 @@
-//! `_rapier_bodies`: the state of many rigid bodies of rapier3d, rapier's Python binding, read
-//! from their serialisations (`RigidBody.to_bytes`) in one call: the bulk read of
-//! `buoyancy.rapier`, which checks it at import against rapier3d's getters, bit for bit, and
-//! reads with the getters should it differ. Thin: the numbers as the getters return them,
-//! nothing computed but what the getters compute.
+//! The Rust side of `buoyancy.rapier`'s glue, one call per step for all bodies:
+//!
+//! - `_rapier_bodies`: the state of many rigid bodies of rapier3d, rapier's Python binding, read
+//!   from their serialisations (`RigidBody.to_bytes`): the bulk read of `buoyancy.rapier`, which
+//!   checks it at import against rapier3d's getters, bit for bit, and reads with the getters
+//!   should it differ. Thin: the numbers as the getters return them, nothing computed but what
+//!   the getters compute.
+//! - `_world_inverse_inertias`: the bodies' world inverse inertias `R·I⁻¹·Rᵀ` from those in
+//!   their own frames (NumPy's stacked 3×3 products cost about a microsecond a body).
 
-use numpy::ndarray::Array2;
-use numpy::{Element, IntoPyArray, PyArray2};
+use buoyancy_core::nalgebra::{Matrix3, Quaternion, UnitQuaternion};
+use numpy::ndarray::{Array2, Array3};
+use numpy::{Element, IntoPyArray, PyArray2, PyArray3};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyList};
 
 use crate::arrays::read_only;
 use crate::errors::type_error;
+use crate::step_inputs::Input;
 
 // rapier's `RigidBody` as rapier3d serialises it: an 8-byte header, then the fields in their
 // declared order, packed. The bytes before the mass properties' optional additional mass and
@@ -170,4 +176,50 @@ pub fn rapier_bodies<'py>(
         array(py, n, 3, flags),
         PyList::new(py, keys)?,
     )))
+}
+
+/// _world_inverse_inertias(quaternions, inverse_inertias)
+///
+/// The world inverse inertia tensors ``R·I⁻¹·Rᵀ``, float64 (N, 3, 3), 1/(kg·m²), of bodies
+/// turned by the unit quaternions ``quaternions`` ``(x, y, z, w)`` (N, 4) from their inverse
+/// inertia tensors in their own frames ``inverse_inertias`` (N, 3, 3). A quaternion with a NaN or
+/// infinite component counts as no rotation (its body gets no force; its inertia stays finite).
+#[pyfunction(name = "_world_inverse_inertias")]
+pub fn world_inverse_inertias<'py>(
+    py: Python<'py>,
+    quaternions: &Bound<'py, PyAny>,
+    inverse_inertias: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyArray3<f64>>> {
+    let n = quaternions.len()?;
+    let what = "one quaternion (x, y, z, w) per body";
+    let quaternions = Input::<f64>::parse(quaternions, "quaternions", n, &[&[4]], "float64", what)?;
+    let what = "one 3×3 inverse inertia tensor per body, in its frame";
+    let inverse_inertias = Input::<f64>::parse(
+        inverse_inertias,
+        "inverse_inertias",
+        n,
+        &[&[3, 3]],
+        "float64",
+        what,
+    )?;
+    let (q, local) = (quaternions.values(), inverse_inertias.values());
+    let mut world = Vec::with_capacity(9 * n);
+    for i in 0..n {
+        let [x, y, z, w] = [q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]];
+        let quaternion = Quaternion::new(w, x, y, z);
+        let rotation = if quaternion.coords.iter().all(|c| c.is_finite()) {
+            UnitQuaternion::new_unchecked(quaternion)
+                .to_rotation_matrix()
+                .into_inner()
+        } else {
+            Matrix3::identity()
+        };
+        // Row-major in, row-major out.
+        let inverse_inertia = Matrix3::from_row_slice(&local[9 * i..9 * i + 9]);
+        let turned = rotation * inverse_inertia * rotation.transpose();
+        world.extend((0..9).map(|k| turned[(k / 3, k % 3)]));
+    }
+    let array = Array3::from_shape_vec((n, 3, 3), world)
+        .unwrap_or_else(|_| unreachable!("nine values per body fill an (n, 3, 3) array"));
+    Ok(array.into_pyarray(py))
 }
