@@ -469,6 +469,22 @@ def test_a_grid_from_numpy_arrays_matches_the_same_field_as_a_callable(rng: np.r
     assert buoyancy.HeightGrid(np.ones((2, 3), dtype=np.float32), 1.0).heights.tolist() == np.ones((2, 3)).tolist()
 
 
+def test_a_grid_on_z_up_water_matches_the_same_field_as_a_callable(rng: np.random.Generator) -> None:
+    """z up: the grid read along x and y, its bound over each body taken on those axes: the
+    same forces as the (linear) field given as a function, at poses from dry to submerged."""
+    u = np.arange(-5.0, 5.01, 0.5)
+    v = np.arange(-4.0, 4.01, 0.25)
+    field = 0.08 * u[None, :] + 0.05 * v[:, None] - 0.1  # heights[row (y), column (x)]
+    grid = buoyancy.Water(normal=(0, 0, 1), waves=buoyancy.HeightGrid(field, spacing=(0.5, 0.25), origin=(-5.0, -4.0)))
+    as_function = buoyancy.Water(normal=(0, 0, 1), waves=lambda p, t: 0.08 * p[:, 0] + 0.05 * p[:, 1] - 0.1)
+    mesh = MESHES["torus"]
+    positions, rotations = poses(rng, mesh, 9)
+    positions = positions[:, [0, 2, 1]] * (0.5, 0.5, 1.0)  # the sweep along z, within the grid
+    for p, q in zip(positions, rotations, strict=True):
+        expected = mesh.buoyancy(p, q, water=as_function)
+        assert_same(mesh.buoyancy(p, q, water=grid), expected, grid.specific_weight * mesh.volume, rtol=1e-11)
+
+
 def test_a_periodic_grid_repeats() -> None:
     heights = np.random.default_rng(3).normal(size=(8, 16))
     grid = buoyancy.HeightGrid(heights, spacing=0.5)
