@@ -209,6 +209,10 @@ def test_water_reaching_an_opening() -> None:
         hull.equilibrium(700.0, (0, -0.2, 0), axis=(0, 0, 1))  # would float 0.7 m deep
     with pytest.raises(ValueError, match="opening"):
         hull.hydrostatics((0, 0, 0), position=(0, -0.3, 0))
+    # The waterplane: the unit square while the hole is dry, an error once the water reaches it.
+    assert hull.waterplane(position=(0, 0.3, 0)).area == pytest.approx(1.0, rel=1e-12)
+    with pytest.raises(ValueError, match="opening"):
+        hull.waterplane(position=(0, -0.3, 0))
     heels = np.arange(0, 91, 5)
     one = hull.gz_curve(300.0, (0, -0.2, 0), heels, axis=(0, 0, 1))
     other = hull.gz_curve(300.0, (0, -0.2, 0), heels, axis=(0, 0, -1))

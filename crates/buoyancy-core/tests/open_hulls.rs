@@ -145,6 +145,21 @@ fn open_top_box_floats_as_the_closed_box_until_the_water_reaches_the_rim() {
         open.check_openings(&heel(0.11), &water),
         Err(Error::OpeningSubmerged { opening: 0, .. })
     ));
+    // The waterplane too: the closed box's while the rim is dry, an error once it is wet.
+    let (a, b) = (
+        open.waterplane(&heel(0.09), &water).unwrap(),
+        closed.waterplane(&heel(0.09), &water).unwrap(),
+    );
+    assert!(relative(a.area, b.area) < 1e-14, "{} {}", a.area, b.area);
+    assert!((a.center_of_flotation - b.center_of_flotation).norm() < 1e-14);
+    assert!(
+        (a.principal_moments[0] - b.principal_moments[0]).abs() < 1e-13
+            && (a.principal_moments[1] - b.principal_moments[1]).abs() < 1e-13
+    );
+    assert!(matches!(
+        open.waterplane(&heel(0.11), &water),
+        Err(Error::OpeningSubmerged { opening: 0, .. })
+    ));
     // The table refuses the first draft that reaches the rim; the closed box takes it.
     let e = open
         .hydrostatic_table(&water, &[0.5, 1.0], &TableOptions::new())

@@ -298,7 +298,7 @@ impl<'a, T: Real> Solver<'a, T> {
             } else {
                 high = z;
             }
-            let area = self.mesh.waterplane(&pose, self.water)?.area;
+            let area = self.mesh.closed_waterplane(&pose, self.water)?.area;
             let step = excess * target / area;
             let next = z + step;
             z = if area > T::zero() && next.is_finite() && next > low && next < high {

@@ -153,9 +153,9 @@
 //! A hull surface without a deck is closed by flat lids when the mesh is built,
 //! [`Mesh::close_openings`](crate::Mesh::close_openings): each planar loop of open edges gets a
 //! fan of triangles, the mesh remembers them ([`Opening`]), and
-//! [`Mesh::check_openings`](crate::Mesh::check_openings) and the hydrostatic table return
-//! [`Error::OpeningSubmerged`](crate::Error::OpeningSubmerged) the moment the water reaches a
-//! rim. While the rims are dry, every result is that of the open hull.
+//! [`Mesh::check_openings`](crate::Mesh::check_openings), the waterplane and the hydrostatic
+//! table return [`Error::OpeningSubmerged`](crate::Error::OpeningSubmerged) the moment the water
+//! reaches a rim. While the rims are dry, every result is that of the open hull.
 //!
 //! # Equilibrium
 //! [`Mesh::equilibrium`](crate::Mesh::equilibrium) finds the pose at rest of a body of mass `m`

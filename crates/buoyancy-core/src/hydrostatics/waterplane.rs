@@ -130,9 +130,29 @@ impl<T: Real> Mesh<T> {
     ///
     /// # Errors
     /// [`Error::InvalidPose`] if the pose has a NaN or infinite component or a zero quaternion;
-    /// [`Error::NonFiniteResult`] if the pose is so large that the result overflows.
+    /// [`Error::OpeningSubmerged`] if the water reaches the rim of an opening closed by
+    /// [`Mesh::close_openings`] (the lid is no waterplane); [`Error::NonFiniteResult`] if the
+    /// pose is so large that the result overflows.
     pub fn waterplane(&self, pose: &Pose<T>, water: &Water<T>) -> Result<Waterplane<T>, Error> {
         let frame = Frame::new(self, pose, water)?;
+        self.openings_dry(&frame)?;
+        self.waterplane_at(&frame)
+    }
+
+    /// [`waterplane`](Self::waterplane) of the closed mesh, its lids counted as hull wherever
+    /// the water is: for the equilibrium solver's iterates, which may wet a lid on the way to a
+    /// rest that does not.
+    pub(crate) fn closed_waterplane(
+        &self,
+        pose: &Pose<T>,
+        water: &Water<T>,
+    ) -> Result<Waterplane<T>, Error> {
+        self.waterplane_at(&Frame::new(self, pose, water)?)
+    }
+
+    /// The waterplane in the frame `frame`, its first axis the mesh's x axis projected on the
+    /// plane (its z axis when x is within 30° of the vertical).
+    fn waterplane_at(&self, frame: &Frame<T>) -> Result<Waterplane<T>, Error> {
         let half = T::from_f64_lossy(0.5);
         let normal = &frame.normal_local;
         // The x axis is within 30° of the vertical when its projection is shorter than 1/2;
@@ -140,7 +160,7 @@ impl<T: Real> Mesh<T> {
         let e1 = in_plane(&Vector3::x(), normal, half)
             .or_else(|| in_plane(&Vector3::z(), normal, half))
             .unwrap_or_else(Vector3::x);
-        self.waterplane_in(&frame, &e1)
+        self.waterplane_in(frame, &e1)
     }
 
     /// The waterplane in the frame `frame`, with `e1` (mesh frame, unit, in the plane) the first
