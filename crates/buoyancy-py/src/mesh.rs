@@ -777,6 +777,9 @@ impl PyMesh {
     ///     World frame; its ``axes[0]`` is the mesh's x axis projected on the plane (its z axis
     ///     when x is within 30° of the vertical).
     ///
+    /// Raises ``ValueError`` when the water reaches the rim of an opening closed by
+    /// :meth:`close_openings` (its lid is no waterplane).
+    ///
     /// Examples
     /// --------
     /// >>> ring = buoyancy.shapes.torus(1.0, 0.25, 64, 32)   # about y, the up axis
