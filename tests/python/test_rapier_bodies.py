@@ -10,6 +10,8 @@ import pytest
 
 from buoyancy._core import _rapier_bodies, _world_inverse_inertias
 
+from conftest import quaternion_matrix
+
 HEADER = b"RPYS\x01\x00\x00\x00"
 
 
@@ -81,18 +83,6 @@ def test_no_bodies_and_not_bytes() -> None:
         _rapier_bodies(["abc"], HEADER)  # type: ignore[list-item]
 
 
-def rotation_matrix(q: np.ndarray) -> np.ndarray:
-    """The rotation matrix of the unit quaternion ``(x, y, z, w)``, by the textbook formula."""
-    x, y, z, w = q
-    return np.array(
-        [
-            [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
-        ]
-    )
-
-
 def test_world_inverse_inertias_turn_the_local_tensors() -> None:
     rng = np.random.default_rng(7)
     quaternions = rng.normal(size=(50, 4))
@@ -106,7 +96,7 @@ def test_world_inverse_inertias_turn_the_local_tensors() -> None:
         if i == 3:
             np.testing.assert_array_equal(world[i], tensor)
             continue
-        r = rotation_matrix(q)
+        r = quaternion_matrix(q)
         np.testing.assert_allclose(world[i], r @ tensor @ r.T, rtol=0, atol=1e-13 * np.abs(tensor).max())
         # The eigenvalues (the principal inverse inertias) do not turn.
         np.testing.assert_allclose(np.linalg.eigvalsh(world[i]), np.linalg.eigvalsh(tensor), atol=1e-12)
