@@ -434,7 +434,22 @@ def fmt_time(ns: float) -> str:
     return f"{us / 1e3:.2f} ms"
 
 
-def machine() -> list[str]:
+# The packages whose versions the reports list.
+PACKAGES = (
+    "buoyancy",
+    "numpy",
+    "trimesh",
+    "scipy",
+    "shapely",
+    "rtree",
+    "mapbox-earcut",
+    "networkx",
+    "navaltoolbox",
+)
+
+
+def machine(packages: tuple[str, ...] = PACKAGES) -> list[str]:
+    """The report's header lines: the CPU, Python and the versions of ``packages``."""
     cpu = platform.processor() or "unknown CPU"
     try:
         for line in pathlib.Path("/proc/cpuinfo").read_text().splitlines():
@@ -445,17 +460,7 @@ def machine() -> list[str]:
         pass
     usable = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
     versions = []
-    for pkg in (
-        "buoyancy",
-        "numpy",
-        "trimesh",
-        "scipy",
-        "shapely",
-        "rtree",
-        "mapbox-earcut",
-        "networkx",
-        "navaltoolbox",
-    ):
+    for pkg in packages:
         try:
             versions.append(f"{pkg} {importlib.metadata.version(pkg)}")
         except importlib.metadata.PackageNotFoundError:

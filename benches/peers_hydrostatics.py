@@ -57,12 +57,9 @@ rows); then the hydrostatics at a given pose: ours ``mesh.hydrostatics``, navalt
 from __future__ import annotations
 
 import argparse
-import importlib.metadata
 import math
 import os
 import pathlib
-import platform
-import subprocess
 import sys
 import tempfile
 import time
@@ -76,6 +73,8 @@ os.environ.setdefault("MKL_NUM_THREADS", "1")
 import numpy as np
 
 import buoyancy
+
+from peers import git_state, machine
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 RHO, G = 1000.0, 9.81
@@ -240,39 +239,6 @@ def load_average() -> str:
         return "load " + ", ".join(f"{x:.2f}" for x in os.getloadavg())
     except OSError:
         return "load unknown"
-
-
-def machine() -> list[str]:
-    cpu = platform.processor() or "unknown CPU"
-    try:
-        for line in pathlib.Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    usable = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
-    versions = []
-    for pkg in ("buoyancy", "numpy", "navaltoolbox", "capytaine"):
-        try:
-            versions.append(f"{pkg} {importlib.metadata.version(pkg)}")
-        except importlib.metadata.PackageNotFoundError:
-            versions.append(f"{pkg} (not installed)")
-    return [
-        f"CPU: {cpu}, {os.cpu_count()} logical cores ({usable} usable)",
-        f"Python {platform.python_version()} ({platform.python_implementation()}), {platform.system()} {platform.machine()}",
-        "Packages: " + ", ".join(versions),
-    ]
-
-
-def git_state() -> str:
-    try:
-        out = subprocess.run(
-            ["git", "-C", str(REPO), "describe", "--always", "--dirty"], capture_output=True, text=True, check=True
-        )
-        return out.stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
 
 
 def table(header: list[str], rows: list[list[str]]) -> list[str]:
@@ -861,7 +827,7 @@ def main() -> int:
     parser.add_argument("--out", type=pathlib.Path, default=REPO / "benches" / "PEERS_HYDROSTATICS.md")
     args = parser.parse_args()
 
-    header = machine()
+    header = machine(("buoyancy", "numpy", "navaltoolbox", "capytaine"))
     start = load_average()
     for line in header:
         print(line)
