@@ -1,7 +1,9 @@
-"""Shared fixtures: the sample meshes beside the repository, and a seeded random generator."""
+"""Shared fixtures: the sample meshes beside the repository, a seeded random generator, and the
+runner of docstring examples."""
 
 from __future__ import annotations
 
+import doctest
 import os
 import pathlib
 
@@ -52,3 +54,14 @@ def quaternion_matrix(q: np.ndarray) -> np.ndarray:
             [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
         ]
     )
+
+
+def run_examples(text: str, name: str) -> int:
+    """Runs the `>>>` examples of a docstring; returns how many ran."""
+    parser = doctest.DocTestParser()
+    test = parser.get_doctest(text, {"buoyancy": buoyancy, "np": np}, name, None, 0)
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    runner.run(test)
+    result = runner.summarize(verbose=False)
+    assert result.failed == 0, f"{name}: {result.failed} doctest examples failed"
+    return result.attempted

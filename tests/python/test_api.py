@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import doctest
 import pathlib
 import pickle
 import re
@@ -15,7 +14,7 @@ import buoyancy
 from buoyancy import shapes
 from buoyancy._sample_meshes import sample_meshes_dir
 
-from conftest import REPO, quaternion_matrix, random_quaternions, require_sample_mesh
+from conftest import REPO, quaternion_matrix, random_quaternions, require_sample_mesh, run_examples
 
 TET_V = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
 TET_F = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
@@ -470,17 +469,6 @@ def test_transformed_copies_pickle_bit_for_bit() -> None:
 def test_transform_errors_name_the_argument(call, error: type[Exception], match: str) -> None:  # type: ignore[no-untyped-def]
     with pytest.raises(error, match=match):
         call(shapes.cube())
-
-
-def run_examples(text: str, name: str) -> int:
-    """Runs the `>>>` examples of a docstring; returns how many ran."""
-    parser = doctest.DocTestParser()
-    test = parser.get_doctest(text, {"buoyancy": buoyancy, "np": np}, name, None, 0)
-    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
-    runner.run(test)
-    result = runner.summarize(verbose=False)
-    assert result.failed == 0, f"{name}: {result.failed} doctest examples failed"
-    return result.attempted
 
 
 def test_docstring_examples() -> None:

@@ -5,7 +5,6 @@ bodies of several parts, per-body settings."""
 
 from __future__ import annotations
 
-import doctest
 import pickle
 import threading
 from typing import Any
@@ -14,6 +13,8 @@ import numpy as np
 import pytest
 
 import buoyancy
+
+from conftest import run_examples
 
 WEIGHT = 500.0 * 9.81  # N, of the half-density 1 m cube: its buoyancy half under water
 IDENTITY = (0.0, 0.0, 0.0, 1.0)
@@ -373,12 +374,7 @@ def test_docstring_examples(name: str) -> None:
     obj: Any = buoyancy
     for part in name.split("."):
         obj = getattr(obj, part)
-    parser = doctest.DocTestParser()
-    test = parser.get_doctest(obj.__doc__ or "", {"buoyancy": buoyancy, "np": np}, name, None, 0)
-    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
-    runner.run(test)
-    result = runner.summarize(verbose=False)
-    assert result.attempted > 0 and result.failed == 0
+    assert run_examples(obj.__doc__ or "", name) > 0
 
 
 def test_stubs_list_every_public_name() -> None:

@@ -9,6 +9,8 @@ import pytest
 import buoyancy
 from buoyancy import shapes
 
+from conftest import run_examples
+
 RHO_G = 1000.0 * 9.81
 
 
@@ -118,12 +120,4 @@ def test_waterplane_rejects_waves_and_bad_poses() -> None:
     ids=lambda o: o.__qualname__,
 )
 def test_docstring_examples(obj: object) -> None:
-    import doctest
-
-    test = doctest.DocTestParser().get_doctest(
-        obj.__doc__ or "", {"buoyancy": buoyancy, "np": np}, getattr(obj, "__qualname__", "?"), None, 0
-    )
-    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
-    runner.run(test)
-    result = runner.summarize(verbose=False)
-    assert result.attempted > 0 and result.failed == 0
+    assert run_examples(obj.__doc__ or "", getattr(obj, "__qualname__", "?")) > 0

@@ -1,7 +1,6 @@
 """Mesh.equilibrium, Mesh.gz_curve and Mesh.hydrostatic_table against the box formulas, the
 square-log rule, and Mesh.buoyancy at the poses they return."""
 
-import doctest
 import math
 import pathlib
 
@@ -10,6 +9,8 @@ import pytest
 
 import buoyancy
 from buoyancy import shapes
+
+from conftest import run_examples
 
 RHO, G = 1000.0, 9.81
 LENGTH, DEPTH, BEAM = 4.0, 1.0, 2.0
@@ -164,13 +165,7 @@ def test_errors_name_the_argument(call, error: type[Exception], match: str) -> N
     ids=lambda o: o.__qualname__,
 )
 def test_docstring_examples(obj: object) -> None:
-    test = doctest.DocTestParser().get_doctest(
-        obj.__doc__ or "", {"buoyancy": buoyancy, "np": np}, getattr(obj, "__qualname__", "?"), None, 0
-    )
-    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
-    runner.run(test)
-    result = runner.summarize(verbose=False)
-    assert result.attempted > 0 and result.failed == 0
+    assert run_examples(obj.__doc__ or "", getattr(obj, "__qualname__", "?")) > 0
 
 
 def holed_box() -> tuple[np.ndarray, np.ndarray]:
