@@ -232,7 +232,7 @@ impl Controller {
     /// [`Error::EmptyBody`] for no parts.
     pub fn add(&mut self, parts: Vec<Part>, options: BodyOptions) -> Result<usize, Error> {
         let mut body = FloatingBody::new(parts, options)?;
-        self.reduce(&mut body, self.resolution);
+        (body.reduced, body.resolution) = self.reduced_for(&body);
         self.bodies.push(body);
         Ok(self.bodies.len() - 1)
     }
@@ -278,19 +278,19 @@ impl Controller {
 
     /// Builds the reduced copies of body `index`'s meshes for its resolution.
     fn rebuild(&mut self, index: usize) {
-        let resolution = self.bodies[index]
-            .resolution_override
-            .unwrap_or(self.resolution);
-        let reduced = self.reduced_copies(&self.bodies[index].parts, resolution);
+        let copies = self.reduced_for(&self.bodies[index]);
         let body = &mut self.bodies[index];
-        (body.reduced, body.resolution) = (reduced, resolution);
+        (body.reduced, body.resolution) = copies;
     }
 
-    /// Gives `body` the reduced copies of its meshes for its own resolution, else `fallback`.
-    fn reduce(&self, body: &mut FloatingBody, fallback: DampingResolution) {
-        let resolution = body.resolution_override.unwrap_or(fallback);
-        body.reduced = self.reduced_copies(&body.parts, resolution);
-        body.resolution = resolution;
+    /// The reduced copies of `body`'s meshes for its own resolution, else the controller's,
+    /// and that resolution.
+    fn reduced_for(
+        &self,
+        body: &FloatingBody,
+    ) -> (Vec<Option<Arc<ReducedMesh<f64>>>>, DampingResolution) {
+        let resolution = body.resolution_override.unwrap_or(self.resolution);
+        (self.reduced_copies(&body.parts, resolution), resolution)
     }
 
     /// Per part, the reduced copy of its mesh at `resolution` (`None`: the mesh itself): the
@@ -336,7 +336,7 @@ impl Controller {
             return Ok(false);
         };
         replacement.resolution_override = body.resolution_override;
-        self.reduce(&mut replacement, self.resolution);
+        (replacement.reduced, replacement.resolution) = self.reduced_for(&replacement);
         let body = &mut self.bodies[index];
         *body = FloatingBody {
             share: body.share,
