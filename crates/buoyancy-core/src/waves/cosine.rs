@@ -150,23 +150,54 @@ fn add_cosines_with<const FUSED: bool>(
             &y[start..end],
             &z[start..end],
         );
-        for t in terms {
-            let [kx, ky, kz] = t.k;
-            let phases = x.iter().zip(y).zip(z).map(|((x, y), z)| {
-                // `((kx·x + ky·y) + kz·z) + offset`, as the scalar code sums it.
-                madd::<FUSED>(kz, *z, madd::<FUSED>(ky, *y, kx * x)) + t.offset
-            });
-            if t.in_range {
-                for (eta, phase) in sum.iter_mut().zip(phases) {
-                    *eta = madd::<FUSED>(t.amplitude, cos_in_range_with::<FUSED>(phase), *eta);
+        // Four terms to a pass over the points where all four are in range, so that each point
+        // is loaded and its sum stored once for four cosines, whose chains interleave; each
+        // point's sum still adds the terms in their order.
+        let mut rest = terms;
+        while let [a, b, c, d, tail @ ..] = rest {
+            if a.in_range && b.in_range && c.in_range && d.in_range {
+                for (eta, ((x, y), z)) in sum.iter_mut().zip(x.iter().zip(y).zip(z)) {
+                    let p = [a, b, c, d].map(|t| phase::<FUSED>(t, *x, *y, *z));
+                    let mut s = *eta;
+                    for (t, p) in [a, b, c, d].iter().zip(p) {
+                        s = madd::<FUSED>(t.amplitude, cos_in_range_with::<FUSED>(p), s);
+                    }
+                    *eta = s;
                 }
             } else {
-                for (eta, phase) in sum.iter_mut().zip(phases) {
-                    *eta += t.amplitude * cos(phase);
+                for t in [a, b, c, d] {
+                    add_term::<FUSED>(sum, x, y, z, t);
                 }
             }
+            rest = tail;
+        }
+        for t in rest {
+            add_term::<FUSED>(sum, x, y, z, t);
         }
         start = end;
+    }
+}
+
+/// `((kx·x + ky·y) + kz·z) + offset`, the phase of term `t` at `(x, y, z)`.
+#[inline(always)]
+fn phase<const FUSED: bool>(t: &CosineTerm, x: f64, y: f64, z: f64) -> f64 {
+    let [kx, ky, kz] = t.k;
+    madd::<FUSED>(kz, z, madd::<FUSED>(ky, y, kx * x)) + t.offset
+}
+
+/// `sum[i] += amplitude·cos(phase)` of the one term `t` over the points of a block.
+#[inline(always)]
+fn add_term<const FUSED: bool>(sum: &mut [f64], x: &[f64], y: &[f64], z: &[f64], t: &CosineTerm) {
+    let points = x.iter().zip(y).zip(z);
+    if t.in_range {
+        for (eta, ((x, y), z)) in sum.iter_mut().zip(points) {
+            let phase = phase::<FUSED>(t, *x, *y, *z);
+            *eta = madd::<FUSED>(t.amplitude, cos_in_range_with::<FUSED>(phase), *eta);
+        }
+    } else {
+        for (eta, ((x, y), z)) in sum.iter_mut().zip(points) {
+            *eta += t.amplitude * cos(phase::<FUSED>(t, *x, *y, *z));
+        }
     }
 }
 
@@ -250,6 +281,50 @@ mod tests {
         {
             let fused = run(&|s| add_cosines_with::<true>(s, &x, &y, &z, &terms));
             assert!(fused < 5e-13, "{fused:e}");
+        }
+    }
+
+    /// The passes of four terms add each point's terms in their order, one at a time: the
+    /// sums equal those of the terms taken one by one, bit for bit, on both paths.
+    #[test]
+    fn four_terms_to_a_pass_change_no_bit() {
+        let n = BLOCK + 13;
+        let point = |i: usize, k: f64| ((i as f64 + 0.5) * k).sin() * 40.0;
+        let x: alloc::vec::Vec<f64> = (0..n).map(|i| point(i, 0.37)).collect();
+        let y: alloc::vec::Vec<f64> = (0..n).map(|i| point(i, 0.11)).collect();
+        let z: alloc::vec::Vec<f64> = (0..n).map(|i| point(i, 0.73)).collect();
+        // 11 terms: two passes of four (the second with one out of range) and three alone.
+        let terms: alloc::vec::Vec<CosineTerm> = (0..11)
+            .map(|i| {
+                let a = i as f64;
+                CosineTerm {
+                    k: [(0.3 * a).cos() * 2.0, 0.05 * a, (0.3 * a).sin() * 2.0],
+                    offset: if i == 6 { 1e7 } else { 0.9 * a - 20.0 },
+                    amplitude: 0.01 + 0.1 * a,
+                    in_range: i != 6,
+                }
+            })
+            .collect();
+        let one_by_one = |fused: bool| {
+            let mut sum = alloc::vec![0.25; n];
+            for t in &terms {
+                if fused {
+                    #[cfg(feature = "std")]
+                    add_term::<true>(&mut sum, &x, &y, &z, t);
+                } else {
+                    add_term::<false>(&mut sum, &x, &y, &z, t);
+                }
+            }
+            sum
+        };
+        let mut grouped = alloc::vec![0.25; n];
+        add_cosines_with::<false>(&mut grouped, &x, &y, &z, &terms);
+        assert_eq!(grouped, one_by_one(false));
+        #[cfg(feature = "std")]
+        {
+            let mut grouped = alloc::vec![0.25; n];
+            add_cosines_with::<true>(&mut grouped, &x, &y, &z, &terms);
+            assert_eq!(grouped, one_by_one(true));
         }
     }
 
