@@ -44,10 +44,17 @@
 //! The total is `F = Σ F_i`, `τ = Σ τ_i + τ_ω`, in the world frame, in N and N·m, the torque
 //! about `c`. The model is explicit: applied unchanged over a step `dt`, a large damping rate
 //! overshoots (the impulse `F·dt` exceeds the momentum it damps). An engine should integrate it
-//! implicitly; the rapier adapter applies it semi-implicitly, `(W − α·dt·G)/(1 + α·dt)` with `α`
-//! the damping rate and `G` the step's other forces (see `buoyancy-rapier`).
+//! implicitly: [`Mesh::damping_with_stiffness`] gives its stiffness `K = −∂W/∂q̇` for that
+//! ([`DampingStiffness`]). The [`controller`](crate::controller) (under both engine adapters)
+//! applies it semi-implicitly, `(W − α·dt·G)/(1 + α·dt)` with `α` the damping rate and `G` the
+//! step's other forces, and through `K` where one rate would overshoot.
 
-use nalgebra::{Matrix3, Point3, Vector3};
+mod stiffness;
+
+use nalgebra::{Matrix3, Matrix6, Point3, Vector3};
+
+use stiffness::DragStiffness;
+pub use stiffness::{DampingStiffness, angular_damping_stiffness};
 
 use crate::clip::clip_below;
 use crate::frame::Frame;
@@ -284,6 +291,8 @@ struct Drag<T: Real> {
     torque: Vector3<T>,
     /// Twice the wetted area.
     double_area: T,
+    /// The stiffness, when asked for.
+    stiffness: Option<DragStiffness<T>>,
 }
 
 impl<T: Real> Drag<T> {
@@ -347,6 +356,9 @@ impl<T: Real> Drag<T> {
         self.force -= normal * pressure;
         // −∫ p × P n̂ dA = n̂ × ∫ P p dA
         self.torque += normal.cross(&moment);
+        if let Some(stiffness) = &mut self.stiffness {
+            stiffness.add_piece(&q, &u, normal, area, self.linear, self.quadratic);
+        }
     }
 }
 
@@ -360,6 +372,7 @@ impl<T: Real> Drag<T> {
         angular_velocity: &Vector3<T>,
         water: &Water<T>,
         coefficients: &DampingCoefficients<T>,
+        with_stiffness: bool,
     ) -> Self {
         let rotation_t = rotation.transpose();
         Drag {
@@ -370,6 +383,7 @@ impl<T: Real> Drag<T> {
             force: Vector3::zeros(),
             torque: Vector3::zeros(),
             double_area: T::zero(),
+            stiffness: with_stiffness.then(DragStiffness::zero),
         }
     }
 
@@ -415,35 +429,8 @@ impl<T: Real> Mesh<T> {
         coefficients: &DampingCoefficients<T>,
     ) -> Result<Damping<T>, Error> {
         let motion = (linear_velocity, angular_velocity);
-        self.damping_over(
-            pose,
-            motion,
-            water,
-            coefficients,
-            T::one(),
-            |frame, drag| {
-                // The hierarchy skips the dry nodes and hands over the submerged ones whole, so only
-                // the triangles near the waterline are classified; the drag itself is not linear in
-                // the velocity over a node (only the part facing the flow counts), so every wetted
-                // triangle is still integrated.
-                self.hierarchy
-                    .walk(&frame.normal_local, frame.height, |visit| match visit {
-                        Visit::SubmergedNode { node, .. } => {
-                            for i in self.hierarchy.range(node) {
-                                let normal = &self.normals[i];
-                                drag.wetted(self.corners(i), &normal.unit, normal.double_area);
-                            }
-                        }
-                        Visit::CrossedLeaf { triangles } => {
-                            for i in triangles {
-                                let v = self.corners(i);
-                                let TriangleNormal { unit, double_area } = &self.normals[i];
-                                drag.in_water(v, frame.heights(&v), unit, *double_area);
-                            }
-                        }
-                    });
-            },
-        )
+        self.damping_over(None, pose, motion, water, coefficients, false)
+            .map(|(damping, _)| damping)
     }
 
     /// The damping of this mesh as [`Mesh::damping`] gives it, with the pressure drag
@@ -466,28 +453,110 @@ impl<T: Real> Mesh<T> {
         coefficients: &DampingCoefficients<T>,
     ) -> Result<Damping<T>, Error> {
         let motion = (linear_velocity, angular_velocity);
-        let scale = reduced.area_scale();
-        self.damping_over(pose, motion, water, coefficients, scale, |frame, drag| {
+        self.damping_over(Some(reduced), pose, motion, water, coefficients, false)
+            .map(|(damping, _)| damping)
+    }
+
+    /// The damping of [`Mesh::damping`] (or of [`Mesh::reduced_damping`] over `reduced`) and
+    /// its stiffness `K = −∂W/∂q̇` (see [`DampingStiffness`]), summed in the same pass: what an
+    /// engine needs to integrate a stiff damping implicitly. The stiffness costs about as much
+    /// again as the damping over the pieces facing the flow. No allocation.
+    ///
+    /// ```
+    /// use buoyancy_core::{DampingCoefficients, Mesh, Pose, Water, shape};
+    /// use nalgebra::{Translation3, UnitQuaternion, Vector3};
+    ///
+    /// let (vertices, triangles) = shape::cube::<f64>(1)?;
+    /// let cube = Mesh::new(vertices, triangles)?;
+    /// let under = Pose::from_parts(Translation3::new(0.0, -3.0, 0.0), UnitQuaternion::identity());
+    /// // Sinking at 1 m/s: the bottom face (1 m²) alone faces the flow, u = 1 m/s all over it,
+    /// // so the heave stiffness is ∫(c₁ + ρC_D·u) dA = 1000 + 1000·1·1 N·s/m.
+    /// let (damping, stiffness) = cube.damping_with_stiffness(
+    ///     None,
+    ///     &under,
+    ///     &Vector3::new(0.0, -1.0, 0.0),
+    ///     &Vector3::zeros(),
+    ///     &Water::default(),
+    ///     &DampingCoefficients::default(),
+    /// )?;
+    /// assert!((stiffness.drag[(1, 1)] - 2000.0).abs() < 1e-9);
+    /// assert!((damping.force.y - 1500.0).abs() < 1e-9);
+    /// # Ok::<(), buoyancy_core::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Mesh::damping`].
+    pub fn damping_with_stiffness(
+        &self,
+        reduced: Option<&ReducedMesh<T>>,
+        pose: &Pose<T>,
+        linear_velocity: &Vector3<T>,
+        angular_velocity: &Vector3<T>,
+        water: &Water<T>,
+        coefficients: &DampingCoefficients<T>,
+    ) -> Result<(Damping<T>, DampingStiffness<T>), Error> {
+        let motion = (linear_velocity, angular_velocity);
+        let (damping, stiffness) =
+            self.damping_over(reduced, pose, motion, water, coefficients, true)?;
+        Ok((
+            damping,
+            stiffness.unwrap_or(DampingStiffness {
+                drag: Matrix6::zeros(),
+                angular: Matrix3::zeros(),
+                torque_point: damping.torque_point,
+            }),
+        ))
+    }
+
+    /// Adds the pressure drag over this mesh's wetted triangles to `drag`, or over `reduced`'s
+    /// triangles: the hierarchy skips the dry nodes and hands over the submerged ones whole, so
+    /// only the triangles near the waterline are classified; the drag itself is not linear in
+    /// the velocity over a node (only the part facing the flow counts), so every wetted
+    /// triangle is still integrated. A reduced copy is small: every triangle is examined.
+    fn integrate_drag(
+        &self,
+        reduced: Option<&ReducedMesh<T>>,
+        frame: &Frame<T>,
+        drag: &mut Drag<T>,
+    ) {
+        if let Some(reduced) = reduced {
             for (i, normal) in reduced.normals.iter().enumerate() {
                 let v = reduced.corners(i);
                 drag.in_water(v, frame.heights(&v), &normal.unit, normal.double_area);
             }
-        })
+            return;
+        }
+        self.hierarchy
+            .walk(&frame.normal_local, frame.height, |visit| match visit {
+                Visit::SubmergedNode { node, .. } => {
+                    for i in self.hierarchy.range(node) {
+                        let normal = &self.normals[i];
+                        drag.wetted(self.corners(i), &normal.unit, normal.double_area);
+                    }
+                }
+                Visit::CrossedLeaf { triangles } => {
+                    for i in triangles {
+                        let v = self.corners(i);
+                        let TriangleNormal { unit, double_area } = &self.normals[i];
+                        drag.in_water(v, frame.heights(&v), unit, *double_area);
+                    }
+                }
+            });
     }
 
-    /// The damping with the pressure drag summed by `integrate` (given the water plane in the
-    /// mesh frame and the running sums) and the wetted area it finds multiplied by
-    /// `area_scale`: the checks, the early returns and the angular damping of
-    /// [`Mesh::damping`].
+    /// The damping with the pressure drag summed over this mesh or `reduced` (its wetted area
+    /// scaled by [`ReducedMesh::area_scale`]), and with `with_stiffness` its stiffness: the
+    /// checks, the early returns and the angular damping of [`Mesh::damping`]. The stiffness
+    /// is `None` where the damping returns early.
     fn damping_over(
         &self,
+        reduced: Option<&ReducedMesh<T>>,
         pose: &Pose<T>,
         (linear_velocity, angular_velocity): (&Vector3<T>, &Vector3<T>),
         water: &Water<T>,
         coefficients: &DampingCoefficients<T>,
-        area_scale: T,
-        integrate: impl FnOnce(&Frame<T>, &mut Drag<T>),
-    ) -> Result<Damping<T>, Error> {
+        with_stiffness: bool,
+    ) -> Result<(Damping<T>, Option<DampingStiffness<T>>), Error> {
         let frame = Frame::new(self, pose, water)?;
         if !linear_velocity
             .iter()
@@ -498,7 +567,7 @@ impl<T: Real> Mesh<T> {
         }
         // Switched off, or entirely above the surface.
         if coefficients.is_off() || frame.height >= self.bounding_radius {
-            return Ok(Damping::zero(frame.center_of_mass));
+            return Ok((Damping::zero(frame.center_of_mass), None));
         }
         // Everything in the mesh frame, relative to the centroid.
         let mut drag = Drag::new(
@@ -507,10 +576,12 @@ impl<T: Real> Mesh<T> {
             angular_velocity,
             water,
             coefficients,
+            with_stiffness,
         );
-        integrate(&frame, &mut drag);
+        self.integrate_drag(reduced, &frame, &mut drag);
 
         let zero = T::zero();
+        let area_scale = reduced.map_or(T::one(), |r| r.area_scale());
         let wetted_area = drag.double_area * T::from_f64_lossy(0.5) * area_scale;
         let wetted_fraction = if self.surface_area > zero {
             (wetted_area / self.surface_area).min(T::one())
@@ -532,13 +603,37 @@ impl<T: Real> Mesh<T> {
             wetted_area,
             wetted_fraction,
         };
+        let stiffness = drag.stiffness.map(|k| {
+            // K_world = Q·K·Qᵀ, Q = diag(R, R): both halves of `a` turn with the mesh.
+            let mut rotation = Matrix6::zeros();
+            for (row, column) in [(0, 0), (3, 3)] {
+                for i in 0..3 {
+                    for j in 0..3 {
+                        rotation[(row + i, column + j)] = frame.rotation[(i, j)];
+                    }
+                }
+            }
+            DampingStiffness {
+                drag: rotation * k.matrix * rotation.transpose(),
+                angular: angular_damping_stiffness(
+                    angular_velocity,
+                    wetted_fraction,
+                    self.volume,
+                    water.density(),
+                    coefficients,
+                ),
+                torque_point: frame.center_of_mass,
+            }
+        });
+        let finite = |m: &Matrix6<T>| m.iter().all(|c| c.is_finite());
         if result
             .force
             .iter()
             .chain(result.torque.iter())
             .all(|c| c.is_finite())
+            && stiffness.as_ref().is_none_or(|k| finite(&k.total()))
         {
-            Ok(result)
+            Ok((result, stiffness))
         } else {
             Err(Error::NonFiniteResult)
         }

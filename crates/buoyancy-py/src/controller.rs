@@ -314,7 +314,10 @@ fn core_parts(py: Python<'_>, parts: &[GivenPart]) -> Vec<Part> {
 ///     ``(W − α·dt·G) / (1 + α·dt)``, with ``G`` the step's buoyancy, gravity and the
 ///     application's own forces and ``α = √(W·M⁻¹W / q̇·M·q̇)`` the damping rate in the metric of
 ///     the body's mass and inertia, so that light bodies reach the model's terminal velocity and
-///     bodies dropped fast do not overshoot. A body whose pose, velocity or result is not finite
+///     bodies dropped fast do not overshoot. Where that one rate would throw a direction of
+///     motion back (a fast spin under a strong angular damping while the body sinks fast), the
+///     damping is taken implicitly through its stiffness ``K = −∂W/∂q̇`` instead, each direction
+///     at its own rate. A body whose pose, velocity or result is not finite
 ///     gets no force (its share is taken back); its report's outcome is ``"not_finite"``.
 ///
 /// Waves

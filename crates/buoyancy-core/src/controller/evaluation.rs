@@ -1,15 +1,15 @@
 //! One body's buoyancy and damping at one step: the sum over its parts, the body's angular
 //! damping, the semi-implicit solve, and the force and torque to hold in the engine's `f32`.
 
-use nalgebra::{Point3, Vector3};
+use nalgebra::{Matrix6, Point3, Vector3};
 
 use super::body::FloatingBody;
 use super::report::{FloatReport, Outcome};
-use super::semi_implicit::{GeneralizedMass, semi_implicit_damping};
+use super::semi_implicit::{GeneralizedMass, implicit_damping, overshoots, semi_implicit_damping};
 use super::settings::Settings;
 use super::state::{BodyState, Motion};
 use super::wrench::Wrench;
-use crate::damping::angular_damping;
+use crate::damping::{angular_damping, angular_damping_stiffness};
 use crate::waves::WaterSurface;
 
 /// A moving free surface at the time of a step.
@@ -87,17 +87,30 @@ pub(crate) fn evaluate(
         force: report.buoyancy_force + gravity * state.mass + own_force,
         torque: report.buoyancy_torque + own_torque,
     };
-    let damping = semi_implicit_damping(
-        Wrench {
-            force: report.damping_force,
-            torque: report.damping_torque,
-        },
-        others,
-        &(state.linear_velocity - settings.damping.current()),
-        &state.angular_velocity,
-        &GeneralizedMass::of(state),
-        dt,
-    );
+    let explicit = Wrench {
+        force: report.damping_force,
+        torque: report.damping_torque,
+    };
+    let relative_velocity = state.linear_velocity - settings.damping.current();
+    let mass = GeneralizedMass::of(state);
+    let omega = &state.angular_velocity;
+    let mut damping = semi_implicit_damping(explicit, others, &relative_velocity, omega, &mass, dt);
+    // Stiff: one rate for the whole wrench would throw a direction of motion back; each
+    // direction is damped at its own rate through the damping's stiffness instead.
+    if overshoots(explicit, &relative_velocity, omega, &mass, dt) {
+        let Some(stiffness) = damping_stiffness(body, state, settings, report.wetted_area) else {
+            return Evaluation::NotFinite;
+        };
+        damping = implicit_damping(
+            explicit,
+            &stiffness,
+            others,
+            &relative_velocity,
+            omega,
+            &mass,
+            dt,
+        );
+    }
     (report.damping_force, report.damping_torque) = (damping.force, damping.torque);
 
     let force = (report.buoyancy_force + report.damping_force).cast::<f32>();
@@ -114,6 +127,54 @@ pub(crate) fn evaluate(
         force,
         torque,
     }
+}
+
+/// The stiffness `K = −∂W/∂q̇` of the body's damping about its center of mass (world frame):
+/// each part's pressure drag (over its reduced copy if it has one), as [`sum_parts`] sums it,
+/// and the angular damping of the whole body for the parts' total `wetted_area`. `None` when
+/// the core rejects a pose or velocity (not finite).
+fn damping_stiffness(
+    body: &FloatingBody,
+    state: &BodyState,
+    settings: &Settings,
+    wetted_area: f64,
+) -> Option<Matrix6<f64>> {
+    let Settings { water, damping, .. } = settings;
+    let center_of_mass = state.center_of_mass;
+    let (velocity, omega) = (state.linear_velocity, state.angular_velocity);
+    let mut stiffness = Matrix6::zeros();
+    for (part, reduced) in body.parts.iter().zip(&body.reduced) {
+        let pose = state.pose * part.shape_to_body;
+        let centroid = pose * part.mesh.centroid();
+        let centroid_velocity = velocity + omega.cross(&(centroid - center_of_mass));
+        let (_, part_stiffness) = part
+            .mesh
+            .damping_with_stiffness(
+                reduced.as_deref(),
+                &pose,
+                &centroid_velocity,
+                &omega,
+                water,
+                damping,
+            )
+            .ok()?;
+        stiffness += part_stiffness.drag_about(&center_of_mass);
+    }
+    if body.surface_area > 0.0 {
+        let angular = angular_damping_stiffness(
+            &omega,
+            (wetted_area / body.surface_area).min(1.0),
+            body.volume,
+            water.density(),
+            damping,
+        );
+        for i in 0..3 {
+            for j in 0..3 {
+                stiffness[(3 + i, 3 + j)] += angular[(i, j)];
+            }
+        }
+    }
+    Some(stiffness)
 }
 
 /// The body's buoyancy and (explicit) damping: the sums over its parts, torques about the

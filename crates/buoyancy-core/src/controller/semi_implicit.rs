@@ -2,7 +2,7 @@
 //! model taken at the end of the step, so that light bodies and bodies dropped fast neither
 //! overshoot nor oscillate.
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
 use super::state::BodyState;
 use super::wrench::Wrench;
@@ -96,6 +96,80 @@ pub(crate) fn semi_implicit_damping(
     }
 }
 
+/// Whether [`semi_implicit_damping`]'s one rate would throw a direction of motion back: with
+/// the other forces balanced (`G = 0`), whether its wrench `W/(1 + α·dt)` alone, applied over
+/// the step, turns the relative velocity or the angular velocity against itself,
+/// `q̇·(q̇ + dt·M⁻¹W/(1 + α·dt)) < 0` for the linear or the angular part. That happens to a
+/// direction much stiffer than the body's motion as a whole (a fast spin under a strong angular
+/// damping while the body also moves fast); [`implicit_damping`] damps each direction at its
+/// own rate instead.
+pub(crate) fn overshoots(
+    damping: Wrench,
+    relative_velocity: &Vector3<f64>,
+    omega: &Vector3<f64>,
+    mass: &GeneralizedMass,
+    dt: f64,
+) -> bool {
+    let balanced = Wrench {
+        force: Vector3::zeros(),
+        torque: Vector3::zeros(),
+    };
+    let alone = semi_implicit_damping(damping, balanced, relative_velocity, omega, mass, dt);
+    let linear = relative_velocity + mass.inv_mass.component_mul(&alone.force) * dt;
+    let angular = omega + mass.inv_inertia * alone.torque * dt;
+    relative_velocity.dot(&linear) < 0.0 || omega.dot(&angular) < 0.0
+}
+
+/// The damping wrench to apply over a step of `dt` seconds, taken at the end of the step
+/// through its stiffness `K = −∂W/∂q̇` (6×6, world frame, about the center of mass, see
+/// [`DampingStiffness`](crate::damping::DampingStiffness)): linearised as `W − K·Δq̇` and
+/// solved with the step's other forces `G` (`others`, as for [`semi_implicit_damping`]),
+///
+/// ```text
+/// (I + dt·M⁻¹K)·Δq̇ = dt·M⁻¹·(G + W),    W' = W − K·Δq̇,
+/// ```
+///
+/// backward Euler for the damping: each direction of motion is damped at its own rate, so a
+/// stiff direction stops without overshooting while a soft one keeps its motion. Locked axes
+/// (zero rows of `M⁻¹`) take no part. `W` is returned as it is when `dt` is not positive or
+/// `K` is zero; [`semi_implicit_damping`]'s answer if the system is singular (it is not for a
+/// positive semi-definite `K`).
+pub(crate) fn implicit_damping(
+    damping: Wrench,
+    stiffness: &Matrix6<f64>,
+    others: Wrench,
+    relative_velocity: &Vector3<f64>,
+    omega: &Vector3<f64>,
+    mass: &GeneralizedMass,
+    dt: f64,
+) -> Wrench {
+    if !(dt > 0.0 && stiffness.iter().any(|k| *k != 0.0)) {
+        return damping;
+    }
+    let mut inverse_mass = Matrix6::zeros();
+    for i in 0..3 {
+        inverse_mass[(i, i)] = mass.inv_mass[i];
+        for j in 0..3 {
+            inverse_mass[(3 + i, 3 + j)] = mass.inv_inertia[(i, j)];
+        }
+    }
+    let total = |w: &Wrench| {
+        Vector6::new(
+            w.force.x, w.force.y, w.force.z, w.torque.x, w.torque.y, w.torque.z,
+        )
+    };
+    let system = Matrix6::identity() + inverse_mass * stiffness * dt;
+    let right = inverse_mass * (total(&others) + total(&damping)) * dt;
+    let Some(change) = system.lu().solve(&right) else {
+        return semi_implicit_damping(damping, others, relative_velocity, omega, mass, dt);
+    };
+    let solved = total(&damping) - stiffness * change;
+    Wrench {
+        force: solved.fixed_rows::<3>(0).into_owned(),
+        torque: solved.fixed_rows::<3>(3).into_owned(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -176,6 +250,98 @@ mod tests {
             (solved.force - Vector3::new(-1.0, 0.0, 0.0)).norm() < 1e-15,
             "{solved:?}"
         );
+    }
+
+    /// A linear damping `W = −K·q̇` of very different rates per direction, on a unit mass:
+    /// the implicit step is backward Euler in each, `W'ᵢ = Wᵢ/(1 + kᵢ·dt)`, so no direction
+    /// turns back, where the one rate of `semi_implicit_damping` throws the stiffest back.
+    #[test]
+    fn implicit_damping_takes_each_direction_at_its_own_rate() {
+        let rates = [2.0, 1e4, 30.0, 0.5, 7e5, 1.0];
+        let stiffness = Matrix6::from_diagonal(&Vector6::from_row_slice(&rates));
+        let (v, omega) = (Vector3::new(1.0, -3.0, 0.5), Vector3::new(-2.0, 4.0, 0.25));
+        let q = Vector6::new(v.x, v.y, v.z, omega.x, omega.y, omega.z);
+        let w = -(stiffness * q);
+        let damping = Wrench {
+            force: w.fixed_rows::<3>(0).into_owned(),
+            torque: w.fixed_rows::<3>(3).into_owned(),
+        };
+        let zero = Wrench {
+            force: Vector3::zeros(),
+            torque: Vector3::zeros(),
+        };
+        let dt = 1.0 / 60.0;
+        let solved = implicit_damping(damping, &stiffness, zero, &v, &omega, &unit_mass(), dt);
+        let solved = Vector6::new(
+            solved.force.x,
+            solved.force.y,
+            solved.force.z,
+            solved.torque.x,
+            solved.torque.y,
+            solved.torque.z,
+        );
+        for i in 0..6 {
+            let expected = w[i] / (1.0 + rates[i] * dt);
+            assert!((solved[i] - expected).abs() < 1e-12 * w[i].abs(), "{i}");
+            // The velocity after the step keeps its sign.
+            assert!(q[i] * (q[i] + solved[i] * dt) > 0.0, "{i}");
+        }
+        assert!(overshoots(damping, &v, &omega, &unit_mass(), dt));
+        let scalar = semi_implicit_damping(damping, zero, &v, &omega, &unit_mass(), dt);
+        assert!(omega.y * (omega.y + scalar.torque.y * dt) < 0.0);
+        // Isotropic, the one rate is right and nothing overshoots.
+        let isotropic = Wrench {
+            force: v * -50.0,
+            torque: omega * -50.0,
+        };
+        assert!(!overshoots(isotropic, &v, &omega, &unit_mass(), dt));
+    }
+
+    #[test]
+    fn implicit_damping_keeps_the_terminal_velocity_and_locked_axes() {
+        let stiffness = Matrix6::from_fn(|i, j| if i == j { 40.0 } else { 3.0 });
+        let velocity = Vector3::new(0.0, -2.0, 0.0);
+        let damping = Wrench {
+            force: Vector3::new(0.5, 30.0, -0.2),
+            torque: Vector3::new(0.1, 0.0, 0.3),
+        };
+        let others = Wrench {
+            force: -damping.force,
+            torque: -damping.torque,
+        };
+        let solved = implicit_damping(
+            damping,
+            &stiffness,
+            others,
+            &velocity,
+            &Vector3::zeros(),
+            &unit_mass(),
+            1.0 / 60.0,
+        );
+        assert!((solved.force - damping.force).norm() < 1e-12, "{solved:?}");
+        assert!(
+            (solved.torque - damping.torque).norm() < 1e-12,
+            "{solved:?}"
+        );
+        // Every axis locked: nothing moves, the wrench stays.
+        let locked = GeneralizedMass {
+            inv_mass: Vector3::zeros(),
+            inv_inertia: Matrix3::zeros(),
+            inertia: Matrix3::zeros(),
+        };
+        let solved = implicit_damping(
+            damping,
+            &stiffness,
+            Wrench {
+                force: Vector3::new(0.0, -1000.0, 0.0),
+                torque: Vector3::zeros(),
+            },
+            &velocity,
+            &Vector3::zeros(),
+            &locked,
+            0.1,
+        );
+        assert_eq!(solved, damping);
     }
 
     #[test]
