@@ -13,6 +13,7 @@ from typing_extensions import deprecated
 _MethodName: TypeAlias = Literal["fast", "improved", "exact", "fast_surface", "exact_surface"]
 _TraversalName: TypeAlias = Literal["auto", "scan", "hierarchy"]
 _Pressure: TypeAlias = Literal["hydrostatic", "froude_krylov"]
+_DampingResolution: TypeAlias = int | Literal["full"]
 _DefectKind: TypeAlias = Literal[
     "non_finite_vertex",
     "index_out_of_range",
@@ -821,6 +822,7 @@ class Controller:
         water: Water | None = None,
         method: _MethodName | str | None = "exact",
         damping: DampingCoefficients | None = None,
+        damping_resolution: _DampingResolution | None = 384,
     ) -> Controller: ...
     @property
     def water(self) -> Water:
@@ -842,6 +844,13 @@ class Controller:
         """The controller's damping coefficients."""
     @damping.setter
     def damping(self, damping: DampingCoefficients, /) -> None: ...
+    @property
+    def damping_resolution(self) -> _DampingResolution:
+        """The most triangles of each mesh's reduced copy for the pressure drag, or ``"full"``."""
+    @damping_resolution.setter
+    def damping_resolution(self, resolution: _DampingResolution, /) -> None: ...
+    def body_damping_resolution(self, index: SupportsIndex) -> _DampingResolution:
+        """The damping resolution body ``index`` has: its own, else the controller's."""
     def __len__(self) -> int: ...
     def add(
         self,
@@ -849,6 +858,7 @@ class Controller:
         method: _MethodName | str | None = None,
         water: Water | None = None,
         damping: DampingCoefficients | None = None,
+        damping_resolution: _DampingResolution | None = None,
     ) -> int:
         """Adds a body; returns its number."""
     def replace(
@@ -858,6 +868,7 @@ class Controller:
         method: _MethodName | str | None = None,
         water: Water | None = None,
         damping: DampingCoefficients | None = None,
+        damping_resolution: _DampingResolution | None = None,
     ) -> None:
         """Replaces the parts and overrides of body ``index``, keeping its books."""
     def remove(self, index: SupportsIndex) -> tuple[_Float32Array, _Float32Array]:

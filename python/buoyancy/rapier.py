@@ -341,6 +341,10 @@ class FloatingBodies:
     damping : DampingCoefficients, optional
         The hydrodynamic damping, default ``DampingCoefficients()``;
         ``DampingCoefficients.off()`` for none.
+    damping_resolution : int or str
+        How finely the pressure drag is integrated: over a reduced copy of at most this many
+        triangles of each mesh of more (built once per mesh), or ``"full"`` (every triangle, the
+        model exactly). Default 384; see :class:`buoyancy.Controller`.
 
     The world's settings apply to every body registered without an override. See the module
     documentation for how forces are applied.
@@ -353,9 +357,12 @@ class FloatingBodies:
         water: Water | None = None,
         method: str = "exact",
         damping: DampingCoefficients | None = None,
+        damping_resolution: int | str = 384,
     ) -> None:
         world_water = _water_for_gravity(gravity)  # checks the gravity even when `water` is given
-        self._controller = Controller(world_water if water is None else water, method, damping)
+        self._controller = Controller(
+            world_water if water is None else water, method, damping, damping_resolution=damping_resolution
+        )
         self._bodies = _Bodies()
 
     @classmethod
@@ -407,6 +414,17 @@ class FloatingBodies:
     def damping(self, damping: DampingCoefficients) -> None:
         self._controller.damping = damping
 
+    @property
+    def damping_resolution(self) -> int | str:
+        """How finely the pressure drag of the bodies without their own is integrated: the most
+        triangles of the reduced copy of each mesh, or ``"full"``. Setting it builds the reduced
+        copies it asks for (once per mesh)."""
+        return self._controller.damping_resolution
+
+    @damping_resolution.setter
+    def damping_resolution(self, resolution: int | str) -> None:
+        self._controller.damping_resolution = resolution
+
     # --- bodies -------------------------------------------------------------------------------
 
     def __len__(self) -> int:
@@ -427,6 +445,7 @@ class FloatingBodies:
         water: Water | None = None,
         method: str | None = None,
         damping: DampingCoefficients | None = None,
+        damping_resolution: int | str | None = None,
     ) -> None:
         """Makes ``body`` (a ``rapier3d.RigidBodyHandle``) float.
 
@@ -434,8 +453,8 @@ class FloatingBodies:
         e.g. the vertices and faces of its trimesh collider; or a list of parts, each such a mesh
         or a tuple ``(mesh, position, quaternion)`` of a mesh in its own frame placed on the body
         (``x_body = R @ x_mesh + position``, the quaternion ``(x, y, z, w)``), e.g. one per
-        collider with its ``position_wrt_parent``. ``water``, ``method`` and ``damping`` override
-        the world's for this body (``water``: a still one, its density, level and normal; the
+        collider with its ``position_wrt_parent``. ``water``, ``method``, ``damping`` and
+        ``damping_resolution`` override the world's for this body (``water``: a still one, its density, level and normal; the
         body floats on the world's waves, if any). Registering a body again replaces its meshes and overrides
         (the force already applied is kept track of)."""
         if not isinstance(mesh, (Mesh, list, tuple)):
@@ -444,11 +463,12 @@ class FloatingBodies:
                 f"parts, got {type(mesh).__name__}"
             )
         i = self._bodies.index.get(body)
+        overrides = dict(method=method, water=water, damping=damping, damping_resolution=damping_resolution)
         if i is None:
-            self._controller.add(mesh, method=method, water=water, damping=damping)
+            self._controller.add(mesh, **overrides)
             self._bodies.add(body)
         else:
-            self._controller.replace(i, mesh, method=method, water=water, damping=damping)
+            self._controller.replace(i, mesh, **overrides)
 
     def unregister(self, body: Hashable, bodies: Any) -> bool:
         """Stops ``body`` from floating and takes back the force and torque the adapter added to

@@ -216,6 +216,66 @@ def test_settings() -> None:
     assert buoyancy.Controller().method == "exact" and buoyancy.Controller().damping == buoyancy.DampingCoefficients()
 
 
+def test_damping_resolution() -> None:
+    # A sphere of 2,352 triangles, half under water, sinking and turning: its pressure drag over
+    # the reduced copy (the default, at most 384 triangles) is close to, not the same as, the
+    # drag over every triangle; a resolution above its triangle count takes the mesh itself.
+    sphere = buoyancy.shapes.uv_sphere(0.62, 49, 25)
+    assert sphere.n_triangles == 2352
+
+    def damping_forces(controller: buoyancy.Controller) -> np.ndarray:
+        n = len(controller)
+        moving = {
+            "linear_velocities": np.tile([0.3, -1.0, 0.0], (n, 1)),
+            "angular_velocities": np.tile([0.0, 0.5, 2.0], (n, 1)),
+        }
+        controller.step(1 / 60, **states(n, **moving))
+        return np.array([controller.report(i).damping_force for i in range(len(controller))])
+
+    default = buoyancy.Controller()
+    assert default.damping_resolution == 384
+    for resolution in (None, "full", 100_000):
+        default.add(sphere, damping_resolution=resolution)
+    assert [default.body_damping_resolution(i) for i in range(3)] == [384, "full", 100_000]
+    reduced, full, whole = damping_forces(default)
+    assert full.tolist() == whole.tolist()
+    assert 0 < np.linalg.norm(reduced - full) < 0.05 * np.linalg.norm(full)
+    everywhere = buoyancy.Controller(damping_resolution="full")
+    everywhere.add(sphere)
+    assert everywhere.damping_resolution == "full" and everywhere.body_damping_resolution(0) == "full"
+    assert damping_forces(everywhere)[0].tolist() == full.tolist()
+    # The controller's resolution reaches the bodies without their own; replacing a body
+    # replaces its resolution too.
+    default.damping_resolution = "full"
+    assert [default.body_damping_resolution(i) for i in range(3)] == ["full", "full", 100_000]
+    assert damping_forces(default)[0].tolist() == full.tolist()
+    default.replace(1, sphere)
+    default.damping_resolution = 200
+    assert [default.body_damping_resolution(i) for i in range(3)] == [200, 200, 100_000]
+
+
+@pytest.mark.parametrize(
+    ("value", "error", "match"),
+    [
+        (0, ValueError, r"^damping_resolution: expected 'full' or the most triangles .*, got 0$"),
+        ("coarse", ValueError, r"^damping_resolution: expected 'full' .*, got \"coarse\"$"),
+        (1.5, TypeError, r"^damping_resolution: expected 'full' or .*, got float$"),
+        (True, TypeError, r"^damping_resolution: expected .*, got bool$"),
+    ],
+)
+def test_damping_resolution_errors(value: Any, error: type[Exception], match: str) -> None:
+    with pytest.raises(error, match=match):
+        buoyancy.Controller(damping_resolution=value)
+    controller = cubes(1)
+    with pytest.raises(error, match=match):
+        controller.add(buoyancy.shapes.cube(), damping_resolution=value)
+    with pytest.raises(error, match=match):
+        controller.damping_resolution = value
+    with pytest.raises(TypeError, match=r"^damping_resolution: expected"):
+        controller.damping_resolution = None
+    assert len(controller) == 1 and controller.damping_resolution == 384
+
+
 @pytest.mark.parametrize(
     ("argument", "value", "match"),
     [

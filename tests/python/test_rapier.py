@@ -842,6 +842,35 @@ def test_no_nan_far_above_or_deep_below(y: float) -> None:
         assert pool.water.water.gravity == pytest.approx(9.81, rel=1e-6)  # rapier's float32 gravity
 
 
+def test_damping_resolution_of_the_world_and_per_body() -> None:
+    # Two spheres of 2,352 triangles in the same state: the one floated with the full mesh's
+    # drag feels another damping than the one over the reduced copy, unless the world's is full.
+    sphere = buoyancy.shapes.uv_sphere(0.62, 49, 25)
+
+    def damping_forces(pool: Pool, full_override: bool) -> list[list[float]]:
+        handles = []
+        for x in (-2.0, 2.0):
+            body = rapier3d.RigidBody.dynamic().translation((x, 0.0, 0.0)).linvel((0.3, -1.0, 0.0))
+            handles.append(pool.add(body.angvel((0.0, 0.5, 2.0)), rapier3d.Collider.ball(0.62).density(500.0), sphere))
+        if full_override:
+            pool.water.register(handles[1], sphere, damping_resolution="full")
+        pool.apply()
+        return [pool.water.report(h).damping_force.tolist() for h in handles]
+
+    pool = Pool()
+    assert pool.water.damping_resolution == 384
+    reduced, full = damping_forces(pool, True)
+    assert reduced != full and np.linalg.norm(np.subtract(reduced, full)) < 0.05 * np.linalg.norm(full)
+    everywhere = Pool(damping_resolution="full")
+    assert everywhere.water.damping_resolution == "full"
+    assert damping_forces(everywhere, False) == [full, full]
+    # Back to the reduced copies for the bodies without their own.
+    everywhere.water.damping_resolution = 384
+    assert damping_forces(everywhere, True) == [reduced, full]
+    with pytest.raises(ValueError, match=r"^damping_resolution: expected 'full' or"):
+        Pool(damping_resolution=-3)
+
+
 def test_z_up_world_and_per_body_overrides() -> None:
     world = rapier3d.PhysicsWorld(gravity=(0.0, 0.0, -9.81))
     fb = FloatingBodies.for_world(world)

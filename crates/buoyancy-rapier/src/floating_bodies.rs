@@ -163,19 +163,16 @@ impl FloatingBodies {
             method: options.method,
             water: options.water,
             damping: options.damping,
+            damping_resolution: options.damping_resolution,
         };
-        let i = if let Some(&i) = self.index.get(&body) {
+        // The reduced meshes are shared: a mesh already reduced at this resolution is not again.
+        if let Some(&i) = self.index.get(&body) {
             self.controller.replace(i, parts, overrides)?;
-            i
         } else {
             let i = self.controller.add(parts, overrides)?;
             self.index.insert(body, i);
             self.handles.push(body);
-            i
-        };
-        // The reduced meshes are shared: a mesh already reduced at this resolution is not again.
-        self.controller
-            .set_body_damping_resolution(i, options.damping_resolution);
+        }
         Ok(())
     }
 

@@ -24,8 +24,6 @@ pub struct Part {
 pub(crate) struct FloatingBody {
     pub parts: Vec<Part>,
     pub options: BodyOptions,
-    /// This body's damping resolution, `None`: the controller's.
-    pub resolution_override: Option<DampingResolution>,
     /// The resolution `reduced` was built with.
     pub resolution: DampingResolution,
     /// Per part, the reduced copy its pressure drag is integrated over, `None`: its own mesh.
@@ -53,7 +51,6 @@ impl FloatingBody {
             reduced: alloc::vec![None; parts.len()],
             parts,
             options,
-            resolution_override: None,
             resolution: DampingResolution::Full,
             volume,
             surface_area,

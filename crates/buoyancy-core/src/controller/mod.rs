@@ -236,8 +236,9 @@ impl Controller {
         self.bodies.is_empty()
     }
 
-    /// Adds a body made of `parts`, with `options`; returns its number (the count of bodies
-    /// before it).
+    /// Adds a body made of `parts`, with `options` (its overrides; the reduced copies its
+    /// damping resolution asks for are built here, once per mesh); returns its number (the
+    /// count of bodies before it).
     ///
     /// # Errors
     /// [`Error::EmptyBody`] for no parts.
@@ -259,7 +260,7 @@ impl Controller {
     pub fn set_damping_resolution(&mut self, resolution: DampingResolution) {
         self.resolution = resolution;
         for i in 0..self.bodies.len() {
-            if self.bodies[i].resolution_override.is_none() {
+            if self.bodies[i].options.damping_resolution.is_none() {
                 self.rebuild(i);
             }
         }
@@ -282,7 +283,7 @@ impl Controller {
         let Some(body) = self.bodies.get_mut(index) else {
             return false;
         };
-        body.resolution_override = resolution;
+        body.options.damping_resolution = resolution;
         self.rebuild(index);
         true
     }
@@ -300,7 +301,7 @@ impl Controller {
         &self,
         body: &FloatingBody,
     ) -> (Vec<Option<Arc<ReducedMesh<f64>>>>, DampingResolution) {
-        let resolution = body.resolution_override.unwrap_or(self.resolution);
+        let resolution = body.options.damping_resolution.unwrap_or(self.resolution);
         (self.reduced_copies(&body.parts, resolution), resolution)
     }
 
@@ -331,8 +332,9 @@ impl Controller {
             .collect()
     }
 
-    /// Replaces the parts and options of body `index`, keeping the books of what was applied
-    /// to it. Returns `Ok(false)` when there is no such body.
+    /// Replaces the parts and options of body `index` (its damping resolution among them),
+    /// keeping the books of what was applied to it. Returns `Ok(false)` when there is no such
+    /// body.
     ///
     /// # Errors
     /// [`Error::EmptyBody`] for no parts.
@@ -343,10 +345,9 @@ impl Controller {
         options: BodyOptions,
     ) -> Result<bool, Error> {
         let mut replacement = FloatingBody::new(parts, options)?;
-        let Some(body) = self.bodies.get(index) else {
+        if index >= self.bodies.len() {
             return Ok(false);
-        };
-        replacement.resolution_override = body.resolution_override;
+        }
         (replacement.reduced, replacement.resolution) = self.reduced_for(&replacement);
         let body = &mut self.bodies[index];
         *body = FloatingBody {

@@ -1,4 +1,5 @@
-//! The water, method and damping of a controller, and one body's overrides of them.
+//! The water, method, damping and damping resolution of a controller, and one body's
+//! overrides of them.
 
 use crate::{DampingCoefficients, Method, Water};
 
@@ -71,6 +72,8 @@ pub struct BodyOptions {
     pub water: Option<Water<f64>>,
     /// This body's damping.
     pub damping: Option<DampingCoefficients<f64>>,
+    /// How finely this body's pressure drag is integrated.
+    pub damping_resolution: Option<DampingResolution>,
 }
 
 impl Settings {
