@@ -252,3 +252,89 @@ fn sum_parts(
     };
     Some(report)
 }
+
+#[cfg(test)]
+mod tests {
+    use alloc::sync::Arc;
+
+    use nalgebra::{Matrix3, Translation3, UnitQuaternion, Vector6};
+
+    use super::*;
+    use crate::controller::body::Part;
+    use crate::controller::settings::BodyOptions;
+    use crate::controller::state::Motion;
+    use crate::reduced_mesh::ReducedMesh;
+    use crate::{DampingCoefficients, Mesh, Pose, shape};
+
+    /// The stiffness of a body of two parts (a cube and a sphere's reduced copy, off its center
+    /// of mass, half under water) against central differences of the damping its parts sum,
+    /// velocity taken at the center of mass.
+    #[test]
+    fn a_bodys_stiffness_is_the_derivative_of_its_damping() {
+        let (v, t) = shape::cube::<f64>(3).unwrap();
+        let cube = Arc::new(Mesh::new(v, t).unwrap());
+        let (v, t) = shape::uv_sphere::<f64>(0.5, 32, 16).unwrap();
+        let sphere = Arc::new(Mesh::new(v, t).unwrap());
+        let reduced = ReducedMesh::new(&sphere, 150).map(Arc::new);
+        assert!(reduced.is_some());
+        let at = |x: f64, z: f64| {
+            Pose::from_parts(Translation3::new(x, 0.1, z), UnitQuaternion::identity())
+        };
+        let mut body = FloatingBody::new(
+            alloc::vec![
+                Part {
+                    mesh: cube,
+                    shape_to_body: at(-0.6, 0.0),
+                },
+                Part {
+                    mesh: sphere,
+                    shape_to_body: at(0.7, 0.3),
+                },
+            ],
+            BodyOptions::default(),
+        )
+        .unwrap();
+        body.reduced = alloc::vec![None, reduced];
+        let settings = Settings {
+            damping: DampingCoefficients::default()
+                .with_angular_drag(0.4, 0.3)
+                .unwrap(),
+            ..Settings::default()
+        };
+        let state = |velocity: &Vector6<f64>| BodyState {
+            pose: Pose::from_parts(
+                Translation3::new(0.2, -0.15, 0.1),
+                UnitQuaternion::from_euler_angles(0.3, -0.5, 0.2),
+            ),
+            center_of_mass: Point3::new(0.3, -0.1, 0.05),
+            linear_velocity: velocity.fixed_rows::<3>(0).into_owned(),
+            angular_velocity: velocity.fixed_rows::<3>(3).into_owned(),
+            mass: 400.0,
+            inverse_mass: Vector3::repeat(1.0 / 400.0),
+            inverse_inertia: Matrix3::identity() / 60.0,
+            gravity_scale: 1.0,
+            applied_force: Vector3::zeros(),
+            applied_torque: Vector3::zeros(),
+            motion: Motion::Dynamic,
+            sleeping: false,
+        };
+        let wrench = |velocity: &Vector6<f64>| {
+            let r = sum_parts(&body, &state(velocity), &settings, None).unwrap();
+            let (f, t) = (r.damping_force, r.damping_torque);
+            Vector6::new(f.x, f.y, f.z, t.x, t.y, t.z)
+        };
+        let velocity = Vector6::new(0.5, -0.8, 0.3, 0.7, 1.1, -0.6);
+        let report = sum_parts(&body, &state(&velocity), &settings, None).unwrap();
+        let k = damping_stiffness(&body, &state(&velocity), &settings, report.wetted_area).unwrap();
+        let h = 1e-6;
+        for j in 0..6 {
+            let step = Vector6::from_fn(|i, _| if i == j { h } else { 0.0 });
+            let column = (wrench(&(velocity - step)) - wrench(&(velocity + step))) / (2.0 * h);
+            assert!(
+                (column - k.column(j)).norm() < 1e-6 * k.norm(),
+                "column {j}: {column:?} vs {:?}",
+                k.column(j)
+            );
+        }
+    }
+}
