@@ -308,7 +308,7 @@ fn core_parts(py: Python<'_>, parts: &[GivenPart]) -> Vec<Part> {
     parts
         .iter()
         .map(|p| Part {
-            mesh: std::sync::Arc::new(p.mesh.bind(py).get().core().clone()),
+            mesh: p.mesh.bind(py).get().shared(),
             shape_to_body: Pose::from_parts(Translation3::from(p.position), p.rotation),
         })
         .collect()
@@ -662,7 +662,8 @@ impl PyController {
     ///     quaternion)`` of a mesh in its own frame and the pose of that frame in the body's
     ///     (``x_body = R @ x_mesh + position``; a quaternion ``(x, y, z, w)`` or a 3×3 rotation
     ///     matrix). The body's frame is the one of the ``positions`` and ``quaternions`` given
-    ///     to :meth:`step`. Each mesh is copied once, here.
+    ///     to :meth:`step`. A ``Mesh`` is shared, not copied: the bodies made of the same
+    ///     ``Mesh`` share it, and the reduced copy its damping is integrated over, built once.
     /// method : str, optional
     ///     This body's method; default the controller's.
     /// water : Water, optional

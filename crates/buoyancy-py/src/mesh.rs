@@ -3,7 +3,7 @@
 
 use std::collections::hash_map::DefaultHasher;
 use std::hash::{Hash, Hasher};
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 use buoyancy_core::nalgebra::{Matrix4, Point3, Translation3, UnitQuaternion, Vector3};
 use buoyancy_core::{Error, Pose};
@@ -115,7 +115,8 @@ fn scale_factors(factor: &Bound<'_, PyAny>) -> PyResult<Vector3<f64>> {
 /// its vertices as given and its faces, and pickles. Its array attributes are read-only.
 #[pyclass(frozen, eq, module = "buoyancy", name = "Mesh")]
 pub struct PyMesh {
-    inner: buoyancy_core::Mesh<f64>,
+    /// Shared with the controllers' bodies it floats (a mesh is never changed).
+    inner: Arc<buoyancy_core::Mesh<f64>>,
     /// The vertices as given (for `vertices`, equality and pickling, bit for bit), and after
     /// them the centers of the lids of a hull built by `close_openings`.
     vertices: Vec<Point3<f64>>,
@@ -139,7 +140,7 @@ impl PartialEq for PyMesh {
 impl PyMesh {
     fn new(inner: buoyancy_core::Mesh<f64>, vertices: Vec<Point3<f64>>) -> Self {
         PyMesh {
-            inner,
+            inner: Arc::new(inner),
             vertices,
             given: None,
             hash: OnceLock::new(),
@@ -149,6 +150,12 @@ impl PyMesh {
     /// The core's mesh.
     pub fn core(&self) -> &buoyancy_core::Mesh<f64> {
         &self.inner
+    }
+
+    /// The core's mesh, shared: the bodies of a controller made of the same `Mesh` share one
+    /// core mesh (and its reduced copy for the damping), not a copy each.
+    pub fn shared(&self) -> Arc<buoyancy_core::Mesh<f64>> {
+        Arc::clone(&self.inner)
     }
 
     /// A mesh validated and prepared by the core from vertices and triangles, with the
