@@ -303,13 +303,25 @@ fn given_parts(parts: &Bound<'_, PyAny>) -> PyResult<Vec<GivenPart>> {
         .collect()
 }
 
-/// The core's parts of the given parts (each mesh copied once, here).
-fn core_parts(py: Python<'_>, parts: &[GivenPart]) -> Vec<Part> {
+/// The core's parts of the given parts. Their meshes are shared, not copied: a mesh equal to
+/// one a body of the controller (`bodies`) is made of already (the same object, or the same
+/// vertices and faces) takes that body's core mesh, so that its reduced copy is found and not
+/// built again.
+fn core_parts(py: Python<'_>, parts: &[GivenPart], bodies: &[Vec<GivenPart>]) -> Vec<Part> {
     parts
         .iter()
-        .map(|p| Part {
-            mesh: p.mesh.bind(py).get().shared(),
-            shape_to_body: Pose::from_parts(Translation3::from(p.position), p.rotation),
+        .map(|p| {
+            let mesh = p.mesh.bind(py).get();
+            let hash = mesh.content_hash();
+            let held = bodies
+                .iter()
+                .flatten()
+                .map(|q| q.mesh.bind(py).get())
+                .find(|q| std::ptr::eq(*q, mesh) || (q.content_hash() == hash && *q == mesh));
+            Part {
+                mesh: held.unwrap_or(mesh).shared(),
+                shape_to_body: Pose::from_parts(Translation3::from(p.position), p.rotation),
+            }
         })
         .collect()
 }
@@ -703,7 +715,7 @@ impl PyController {
         let options = body_options(method, water, damping, damping_resolution)?;
         let index = self
             .inner
-            .add(core_parts(py, &given), options)
+            .add(core_parts(py, &given, &self.parts), options)
             .map_err(|e| to_py(e, Some("parts")))?;
         self.parts.push(given);
         Ok(index)
@@ -730,7 +742,7 @@ impl PyController {
         let given = given_parts(parts)?;
         let options = body_options(method, water, damping, damping_resolution)?;
         self.inner
-            .replace(i, core_parts(py, &given), options)
+            .replace(i, core_parts(py, &given, &self.parts), options)
             .map_err(|e| to_py(e, Some("parts")))?;
         self.parts[i] = given;
         Ok(())

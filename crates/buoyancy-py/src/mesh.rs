@@ -152,6 +152,22 @@ impl PyMesh {
         &self.inner
     }
 
+    /// The hash of the vertices (as given) and the faces, consistent with `==`, computed once.
+    pub fn content_hash(&self) -> u64 {
+        *self.hash.get_or_init(|| {
+            let mut h = DefaultHasher::new();
+            for p in &self.vertices {
+                // `+ 0.0` makes -0.0 hash as 0.0, which it equals.
+                for x in [p.x, p.y, p.z] {
+                    (x + 0.0).to_bits().hash(&mut h);
+                }
+            }
+            self.inner.was_reoriented().hash(&mut h);
+            self.inner.triangles().hash(&mut h);
+            h.finish()
+        })
+    }
+
     /// The core's mesh, shared: the bodies of a controller made of the same `Mesh` share one
     /// core mesh (and its reduced copy for the damping), not a copy each.
     pub fn shared(&self) -> Arc<buoyancy_core::Mesh<f64>> {
@@ -1111,18 +1127,7 @@ impl PyMesh {
 
     /// The hash of the vertices (as given) and the faces, consistent with ``==``.
     fn __hash__(&self) -> u64 {
-        *self.hash.get_or_init(|| {
-            let mut h = DefaultHasher::new();
-            for p in &self.vertices {
-                // `+ 0.0` makes -0.0 hash as 0.0, which it equals.
-                for x in [p.x, p.y, p.z] {
-                    (x + 0.0).to_bits().hash(&mut h);
-                }
-            }
-            self.inner.was_reoriented().hash(&mut h);
-            self.inner.triangles().hash(&mut h);
-            h.finish()
-        })
+        self.content_hash()
     }
 
     /// Pickles as the vertices and faces as given: unpickling validates again and gives a
