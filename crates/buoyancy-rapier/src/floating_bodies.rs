@@ -142,7 +142,8 @@ impl FloatingBodies {
     }
 
     /// Makes `body` float: turns its selected colliders into closed meshes (once per rapier
-    /// shape: bodies whose colliders share a `SharedShape` share its mesh) and remembers them
+    /// shape and per set of triangles: bodies whose colliders share a `SharedShape`, or whose
+    /// shapes give the same triangles, share one mesh) and remembers them
     /// with `options`. Registering a body again replaces its meshes and options
     /// (the force already applied is kept track of).
     ///

@@ -1,6 +1,7 @@
 //! Collider shapes to closed triangle meshes, once, at registration.
 
 use std::collections::HashMap;
+use std::hash::{DefaultHasher, Hash, Hasher};
 use std::sync::Arc;
 
 use buoyancy_core::controller::Part;
@@ -14,22 +15,84 @@ use crate::convert::{pose_to_nalgebra, vector_to_nalgebra};
 
 /// The meshes made so far, one per rapier shape (a `SharedShape`, told apart by the address of
 /// its data) and number of subdivisions, so that bodies whose colliders share a shape share
-/// one mesh. Each entry holds the shape too, so that its address stays its own.
+/// one mesh. Each entry holds the shape too, so that its address stays its own. Shapes of their
+/// own that give the same triangles (a ball of the same radius built for each body) share one
+/// mesh too: the meshes are also found by their vertices and triangles.
 #[derive(Clone, Default)]
 pub(crate) struct MeshCache {
     entries: HashMap<MeshKey, (SharedShape, Arc<Mesh<f64>>)>,
+    /// The meshes by the hash of the vertices and triangles they were made of, with those.
+    by_content: HashMap<u64, Vec<MadeOf>>,
 }
 
 /// The address of a shape's data and a number of subdivisions.
 type MeshKey = (usize, u32);
 
+/// A mesh, and the vertices and triangles it was made of (before any reorientation).
+#[derive(Clone)]
+struct MadeOf {
+    points: Vec<Point3<f64>>,
+    triangles: Vec<[u32; 3]>,
+    mesh: Arc<Mesh<f64>>,
+}
+
 impl MeshCache {
     /// Forgets the meshes of shapes no collider holds any more (only the cache does) and that
     /// no body floats with.
     pub fn prune(&mut self) {
-        self.entries.retain(|_, (shape, mesh)| {
-            Arc::strong_count(&shape.0) > 1 || Arc::strong_count(mesh) > 1
+        // The holders of each mesh within the cache: its content entry and its shape entries;
+        // any other holder is a body.
+        let mut held: HashMap<*const Mesh<f64>, usize> = HashMap::new();
+        for (_, mesh) in self.entries.values() {
+            *held.entry(Arc::as_ptr(mesh)).or_insert(1) += 1;
+        }
+        let gone: Vec<MeshKey> = self
+            .entries
+            .iter()
+            .filter(|(_, (shape, mesh))| {
+                Arc::strong_count(&shape.0) == 1
+                    && Arc::strong_count(mesh) <= held[&Arc::as_ptr(mesh)]
+            })
+            .map(|(key, _)| *key)
+            .collect();
+        for key in gone {
+            self.entries.remove(&key);
+        }
+        // A mesh no shape entry and no body holds any more: its content entry alone.
+        for meshes in self.by_content.values_mut() {
+            meshes.retain(|made| Arc::strong_count(&made.mesh) > 1);
+        }
+        self.by_content.retain(|_, meshes| !meshes.is_empty());
+    }
+
+    /// The mesh of `points` and `triangles` made already, or a new one (remembered).
+    fn mesh(
+        &mut self,
+        points: Vec<Point3<f64>>,
+        triangles: Vec<[u32; 3]>,
+    ) -> Result<Arc<Mesh<f64>>, buoyancy_core::Error> {
+        let mut hasher = DefaultHasher::new();
+        for p in &points {
+            // `+ 0.0` makes -0.0 hash as 0.0, which it equals.
+            [p.x + 0.0, p.y + 0.0, p.z + 0.0]
+                .map(f64::to_bits)
+                .hash(&mut hasher);
+        }
+        triangles.hash(&mut hasher);
+        let held = self.by_content.entry(hasher.finish()).or_default();
+        if let Some(made) = held
+            .iter()
+            .find(|made| made.points == points && made.triangles == triangles)
+        {
+            return Ok(made.mesh.clone());
+        }
+        let mesh = Arc::new(Mesh::new(points.clone(), triangles.clone())?);
+        held.push(MadeOf {
+            points,
+            triangles,
+            mesh: mesh.clone(),
         });
+        Ok(mesh)
     }
 }
 
@@ -103,8 +166,9 @@ pub(crate) fn append_meshes(
     if weld {
         weld_vertices(&mut points, &mut triangles);
     }
-    let mesh = Mesh::new(points, triangles).map_err(|source| Error::Mesh { collider, source })?;
-    let mesh = Arc::new(mesh);
+    let mesh = cache
+        .mesh(points, triangles)
+        .map_err(|source| Error::Mesh { collider, source })?;
     cache.entries.insert(key, (shared.clone(), mesh.clone()));
     parts.push(Part {
         mesh,

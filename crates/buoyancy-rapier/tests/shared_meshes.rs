@@ -1,4 +1,5 @@
-//! Bodies whose colliders share a rapier shape share one mesh.
+//! Bodies whose colliders share a rapier shape share one mesh, and so do shapes of their own
+//! that give the same triangles.
 
 use buoyancy_rapier::{FloatOptions, FloatingBodies};
 use rapier3d::prelude::*;
@@ -19,19 +20,19 @@ fn bodies_of_one_shape_share_its_mesh() {
             .unwrap();
         handles.push(h);
     }
-    // A body of its own shape, the same size: a mesh of its own.
-    let (other, _) = world.insert(
-        RigidBodyBuilder::dynamic().translation(Vector::new(-2.0, 0.0, 0.0)),
-        ColliderBuilder::cuboid(0.5, 0.25, 0.5).density(500.0),
-    );
-    water
-        .register(
-            other,
-            &world.bodies,
-            &world.colliders,
-            FloatOptions::default(),
-        )
-        .unwrap();
+    // A body of its own shape, the same size: the same triangles, the same mesh; another size,
+    // a mesh of its own.
+    let mut own = |half_height: f32, x: f32| {
+        let (h, _) = world.insert(
+            RigidBodyBuilder::dynamic().translation(Vector::new(x, 0.0, 0.0)),
+            ColliderBuilder::cuboid(0.5, half_height, 0.5).density(500.0),
+        );
+        water
+            .register(h, &world.bodies, &world.colliders, FloatOptions::default())
+            .unwrap();
+        h
+    };
+    let (other, taller) = (own(0.25, -2.0), own(0.3, -4.0));
     fn mesh(water: &FloatingBodies, h: RigidBodyHandle) -> *const buoyancy_core::Mesh<f64> {
         water.meshes(h).next().unwrap().0
     }
@@ -43,8 +44,13 @@ fn bodies_of_one_shape_share_its_mesh() {
         mesh(&water, handles[0]),
         mesh(&water, handles[2])
     ));
-    assert!(!std::ptr::eq(mesh(&water, handles[0]), mesh(&water, other)));
-    // Other subdivisions make another mesh of the same shape.
+    assert!(std::ptr::eq(mesh(&water, handles[0]), mesh(&water, other)));
+    assert!(!std::ptr::eq(
+        mesh(&water, handles[0]),
+        mesh(&water, taller)
+    ));
+    // A box has the same triangles at any subdivisions: the same mesh. A ball of the same
+    // radius on each body: one mesh per number of subdivisions.
     water
         .register(
             handles[2],
@@ -55,11 +61,24 @@ fn bodies_of_one_shape_share_its_mesh() {
         .unwrap();
     assert!(std::ptr::eq(
         mesh(&water, handles[0]),
-        mesh(&water, handles[1])
-    ));
-    assert!(!std::ptr::eq(
-        mesh(&water, handles[0]),
         mesh(&water, handles[2])
+    ));
+    let mut ball = |subdivisions: u32| {
+        let (h, _) = world.insert(
+            RigidBodyBuilder::dynamic(),
+            ColliderBuilder::ball(0.4).density(500.0),
+        );
+        let options = FloatOptions::default().subdivisions(subdivisions);
+        water
+            .register(h, &world.bodies, &world.colliders, options)
+            .unwrap();
+        h
+    };
+    let balls = [ball(16), ball(16), ball(24)];
+    assert!(std::ptr::eq(mesh(&water, balls[0]), mesh(&water, balls[1])));
+    assert!(!std::ptr::eq(
+        mesh(&water, balls[0]),
+        mesh(&water, balls[2])
     ));
     // They float alike: the same buoyancy at the same depth.
     water.apply(&mut world.bodies, world.integration_parameters.dt);
