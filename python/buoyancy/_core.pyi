@@ -488,6 +488,17 @@ class Mesh:
         coefficients: DampingCoefficients | None = None,
         about: npt.ArrayLike | None = None,
     ) -> Damping: ...
+    def damping_stiffness(
+        self,
+        position: npt.ArrayLike | None = (0, 0, 0),
+        rotation: npt.ArrayLike | None = None,
+        linear_velocity: npt.ArrayLike | None = (0, 0, 0),
+        angular_velocity: npt.ArrayLike | None = (0, 0, 0),
+        water: Water | None = None,
+        coefficients: DampingCoefficients | None = None,
+        about: npt.ArrayLike | None = None,
+    ) -> _FloatArray:
+        """The damping's stiffness ``K = −∂W/∂q̇``, (6, 6), about ``about``."""
     def waterplane(
         self,
         position: npt.ArrayLike | None = (0, 0, 0),

@@ -492,6 +492,7 @@ def test_docstring_examples() -> None:
         "torus_knot": buoyancy.shapes.torus_knot,
         "Water": buoyancy.Water,
         "Mesh.damping": buoyancy.Mesh.damping,
+        "Mesh.damping_stiffness": buoyancy.Mesh.damping_stiffness,
         "DampingCoefficients": buoyancy.DampingCoefficients,
         "DampingCoefficients.off": buoyancy.DampingCoefficients.off,
         "AiryWave": buoyancy.AiryWave,

@@ -1,4 +1,5 @@
-"""The hydrodynamic damping model through the bindings: Mesh.damping, Damping, DampingCoefficients."""
+"""The hydrodynamic damping model through the bindings: Mesh.damping, Mesh.damping_stiffness,
+Damping, DampingCoefficients."""
 
 from __future__ import annotations
 
@@ -81,6 +82,46 @@ def test_current_and_about() -> None:
     np.testing.assert_allclose(e.force, d.force)
     np.testing.assert_allclose(e.torque, d.torque + np.cross(d.about - q, d.force), rtol=1e-12, atol=1e-9)
     np.testing.assert_array_equal(e.about, q)
+
+
+def test_stiffness_is_the_derivative_of_the_damping() -> None:
+    # Against central differences of Mesh.damping, about the center of mass and about another
+    # point (the velocity of that point varied, the torque about it), on a tilted torus half
+    # under water.
+    torus = shapes.torus(1.0, 0.4, 48, 24)
+    rotation = np.array([0.2, -0.1, 0.3, 0.9])
+    pose = dict(position=(0.3, 0.15, -0.2), rotation=rotation / np.linalg.norm(rotation))
+    v, w = np.array([0.4, -0.9, 0.25]), np.array([0.6, -0.3, 1.1])
+    center = torus.damping(**pose).about  # the centroid under the pose
+    coefficients = buoyancy.DampingCoefficients(angular_drag_linear=0.3, angular_drag_quadratic=0.2)
+    for about in (None, center + np.array([0.7, -0.4, 0.2])):
+        q = center if about is None else np.asarray(about)
+        k = torus.damping_stiffness(
+            **pose, linear_velocity=v, angular_velocity=w, coefficients=coefficients, about=about
+        )
+        assert k.shape == (6, 6) and k.dtype == np.float64
+        np.testing.assert_allclose(k, k.T, atol=1e-9 * np.abs(k).max())
+        assert np.linalg.eigvalsh(k).min() > -1e-9 * np.abs(k).max()
+
+        def wrench(motion: np.ndarray, q: np.ndarray = q) -> np.ndarray:
+            # The velocity of `q` and ω, to the center of mass's velocity that damping takes.
+            v_q, w = motion[:3], motion[3:]
+            d = torus.damping(
+                **pose,
+                linear_velocity=v_q + np.cross(w, center - q),
+                angular_velocity=w,
+                coefficients=coefficients,
+                about=q,
+            )
+            return np.concatenate([d.force, d.torque])
+
+        motion = np.concatenate([v - np.cross(w, center - q), w])
+        h = 1e-6
+        columns = [(wrench(motion - h * e) - wrench(motion + h * e)) / (2 * h) for e in np.eye(6)]
+        np.testing.assert_allclose(np.array(columns).T, k, atol=1e-6 * np.abs(k).max())
+    with pytest.raises(ValueError, match="^water: the damping model assumes a flat water surface"):
+        torus.damping_stiffness(water=buoyancy.Water(waves=buoyancy.AiryWave(0.1, 10.0)))
+    assert np.count_nonzero(torus.damping_stiffness(position=(0, 5, 0), linear_velocity=v)) == 0  # dry
 
 
 def test_coefficients() -> None:

@@ -631,7 +631,9 @@ impl<T: Real> Mesh<T> {
             .iter()
             .chain(result.torque.iter())
             .all(|c| c.is_finite())
-            && stiffness.as_ref().is_none_or(|k| finite(&k.total()))
+            && stiffness
+                .as_ref()
+                .is_none_or(|k| finite(&k.about(&k.torque_point)))
         {
             Ok((result, stiffness))
         } else {

@@ -265,6 +265,60 @@ impl PyMesh {
     }
 }
 
+/// The arguments of [`PyMesh::damping`] and [`PyMesh::damping_stiffness`], checked.
+struct DampingArguments {
+    pose: Pose<f64>,
+    linear_velocity: Vector3<f64>,
+    angular_velocity: Vector3<f64>,
+    water: buoyancy_core::Water<f64>,
+    coefficients: buoyancy_core::DampingCoefficients<f64>,
+}
+
+impl DampingArguments {
+    /// The arguments, and the point `about` when given.
+    fn parse(
+        position: Option<&Bound<'_, PyAny>>,
+        rotation: Option<&Bound<'_, PyAny>>,
+        linear_velocity: Option<&Bound<'_, PyAny>>,
+        angular_velocity: Option<&Bound<'_, PyAny>>,
+        water: Option<&Bound<'_, PyAny>>,
+        coefficients: Option<&Bound<'_, PyAny>>,
+        about: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<(Self, Option<Vector3<f64>>)> {
+        let pose = PyMesh::pose(position, rotation)?;
+        let velocity = |v: Option<&Bound<'_, PyAny>>, name: &str| match given(v) {
+            Some(v) => convert::vector3(v, name),
+            None => Ok(Vector3::zeros()),
+        };
+        let linear_velocity = velocity(linear_velocity, "linear_velocity")?;
+        let angular_velocity = velocity(angular_velocity, "angular_velocity")?;
+        let about = match given(about) {
+            Some(a) => Some(convert::vector3(a, "about")?),
+            None => None,
+        };
+        let (water, waves) = PyMesh::water(water)?;
+        if waves.is_some() {
+            return Err(arg_error(
+                "water",
+                "the damping model assumes a flat water surface, and this water has waves: pass a Water without waves",
+            ));
+        }
+        let coefficients =
+            convert::instance::<PyDampingCoefficients>(coefficients, "coefficients")?
+                .map_or_else(buoyancy_core::DampingCoefficients::default, |c| {
+                    c.get().inner
+                });
+        let arguments = DampingArguments {
+            pose,
+            linear_velocity,
+            angular_velocity,
+            water,
+            coefficients,
+        };
+        Ok((arguments, about))
+    }
+}
+
 #[pymethods]
 impl PyMesh {
     #[new]
@@ -640,7 +694,9 @@ impl PyMesh {
     /// Damping
     ///
     /// The model is explicit: a simulation applying it over a step ``dt`` should keep the impulse
-    /// ``|force| * dt`` below the momentum it damps (``buoyancy.rapier`` clamps it so).
+    /// ``|force| * dt`` below the momentum it damps; :class:`Controller` (and so
+    /// ``buoyancy.rapier``) applies it semi-implicitly, and :meth:`damping_stiffness` gives what
+    /// an implicit integration needs.
     ///
     /// Examples
     /// --------
@@ -669,41 +725,101 @@ impl PyMesh {
         coefficients: Option<&Bound<'_, PyAny>>,
         about: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyDamping> {
-        let pose = PyMesh::pose(position, rotation)?;
-        let velocity = |v: Option<&Bound<'_, PyAny>>, name: &str| match given(v) {
-            Some(v) => convert::vector3(v, name),
-            None => Ok(Vector3::zeros()),
-        };
-        let linear_velocity = velocity(linear_velocity, "linear_velocity")?;
-        let angular_velocity = velocity(angular_velocity, "angular_velocity")?;
-        let about = match given(about) {
-            Some(a) => Some(convert::vector3(a, "about")?),
-            None => None,
-        };
-        let (water, waves) = PyMesh::water(water)?;
-        if waves.is_some() {
-            return Err(arg_error(
-                "water",
-                "the damping model assumes a flat water surface, and this water has waves: pass a Water without waves",
-            ));
-        }
-        let coefficients =
-            convert::instance::<PyDampingCoefficients>(coefficients, "coefficients")?
-                .map_or_else(buoyancy_core::DampingCoefficients::default, |c| {
-                    c.get().inner
-                });
+        let (arguments, about) = DampingArguments::parse(
+            position,
+            rotation,
+            linear_velocity,
+            angular_velocity,
+            water,
+            coefficients,
+            about,
+        )?;
         let mesh = &self.inner;
         let d = detach_if_large(py, mesh.triangle_count(), move || {
+            let a = &arguments;
             mesh.damping(
-                &pose,
-                &linear_velocity,
-                &angular_velocity,
-                &water,
-                &coefficients,
+                &a.pose,
+                &a.linear_velocity,
+                &a.angular_velocity,
+                &a.water,
+                &a.coefficients,
             )
         })
         .map_err(|e| to_py(e, None))?;
         Ok(PyDamping::new(&d, about))
+    }
+
+    /// The stiffness of the damping, ``K = −∂W/∂q̇``: how the damping wrench ``W = (force,
+    /// torque)`` of :meth:`damping` changes with the velocity ``q̇ = (linear_velocity,
+    /// angular_velocity)``, what an implicit integration of the damping needs.
+    ///
+    /// Parameters are those of :meth:`damping`. The stiffness is taken about the point ``about``
+    /// (default the center of mass): its rows are the force and the torque about that point, its
+    /// columns the velocity of that point and the angular velocity.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray, shape (6, 6)
+    ///     Symmetric and positive semi-definite, world frame, rows and columns in the order
+    ///     ``(vx, vy, vz, ωx, ωy, ωz)``; N·s/m, N·s and N·m·s. The pressure drag's part is
+    ///     ``∫ (c₁ + ρ·C_D·u) a aᵀ dA`` over the wetted surface facing the flow, with
+    ///     ``a = (n, (p − about) × n)`` and ``u`` the normal velocity there, integrated exactly;
+    ///     the angular damping adds ``s·((a₁ + a₂|ω|)·I + a₂·ω ωᵀ/|ω|)``, ``s = f·ρ·V^{5/3}``,
+    ///     to the ``ω`` block.
+    ///
+    /// Examples
+    /// --------
+    /// The unit cube under water, sinking at 2 m/s: its bottom face (1 m²) feels ``1000·u +
+    /// 500·u²`` Pa, so the heave stiffness is ``1000 + 1000·2 = 3000`` N·s/m.
+    ///
+    /// >>> cube = buoyancy.shapes.cube()
+    /// >>> k = cube.damping_stiffness(position=(0, -3, 0), linear_velocity=(0, -2, 0))
+    /// >>> k.shape, round(float(k[1, 1]), 9)
+    /// ((6, 6), 3000.0)
+    #[pyo3(
+        signature = (position=None, rotation=None, linear_velocity=None, angular_velocity=None, water=None, coefficients=None, about=None),
+        text_signature = "(self, position=(0, 0, 0), rotation=None, linear_velocity=(0, 0, 0), angular_velocity=(0, 0, 0), water=None, coefficients=None, about=None)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn damping_stiffness<'py>(
+        &self,
+        py: Python<'py>,
+        position: Option<&Bound<'_, PyAny>>,
+        rotation: Option<&Bound<'_, PyAny>>,
+        linear_velocity: Option<&Bound<'_, PyAny>>,
+        angular_velocity: Option<&Bound<'_, PyAny>>,
+        water: Option<&Bound<'_, PyAny>>,
+        coefficients: Option<&Bound<'_, PyAny>>,
+        about: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let (arguments, about) = DampingArguments::parse(
+            position,
+            rotation,
+            linear_velocity,
+            angular_velocity,
+            water,
+            coefficients,
+            about,
+        )?;
+        let mesh = &self.inner;
+        let about = about.map_or_else(|| arguments.pose * mesh.centroid(), Point3::from);
+        let k = detach_if_large(py, mesh.triangle_count(), move || {
+            let a = &arguments;
+            mesh.damping_with_stiffness(
+                None,
+                &a.pose,
+                &a.linear_velocity,
+                &a.angular_velocity,
+                &a.water,
+                &a.coefficients,
+            )
+            .map(|(_, k)| k.about(&about))
+        })
+        .map_err(|e| to_py(e, None))?;
+        Ok(PyArray2::from_owned_array(
+            py,
+            numpy::ndarray::Array2::from_shape_fn((6, 6), |(i, j)| k[(i, j)]),
+        ))
     }
 
     /// A copy of the mesh with every vertex mapped by an affine transform, mesh frame:

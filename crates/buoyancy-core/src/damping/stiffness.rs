@@ -45,10 +45,11 @@ pub struct DampingStiffness<T: Real> {
 }
 
 impl<T: Real> DampingStiffness<T> {
-    /// The whole stiffness, pressure drag plus angular damping, about
-    /// [`torque_point`](Self::torque_point).
-    pub fn total(&self) -> Matrix6<T> {
-        let mut k = self.drag;
+    /// The whole stiffness, pressure drag plus angular damping, about the world point `q`
+    /// (the velocity taken at `q`, the torque about it): [`drag_about`](Self::drag_about) with
+    /// [`angular`](Self::angular) added to its `ω` block, which moving the point leaves as it is.
+    pub fn about(&self, q: &Point3<T>) -> Matrix6<T> {
+        let mut k = self.drag_about(q);
         add_block(&mut k, 3, 3, &self.angular);
         k
     }
@@ -233,11 +234,26 @@ mod tests {
                 )
                 .unwrap();
             let other = centroid + Vector3::new(0.7, -0.4, 0.2);
+            // About the centroid and another point; `about` adds the angular damping's, which
+            // the drag's shift leaves alone: it is the wrench's minus the angular term's.
+            let angular = angular_damping_stiffness(
+                &omega,
+                damping.wetted_fraction,
+                mesh.volume(),
+                water.density(),
+                &coefficients,
+            );
+            let mut drag_only = stiffness.about(&other);
+            for i in 0..3 {
+                for j in 0..3 {
+                    drag_only[(3 + i, 3 + j)] -= angular[(i, j)];
+                }
+            }
+            assert!((drag_only - stiffness.drag_about(&other)).norm() < 1e-12 * drag_only.norm());
             for (q, k) in [
-                (centroid, stiffness.total()),
-                (other, stiffness.drag_about(&other)),
+                (centroid, stiffness.about(&centroid)),
+                (other, stiffness.about(&other)),
             ] {
-                let with_angular = q == centroid;
                 // The same motion, its linear velocity taken at `q`.
                 let v_q = at_centroid_v - omega.cross(&(centroid - q));
                 let velocity = Vector6::new(v_q.x, v_q.y, v_q.z, omega.x, omega.y, omega.z);
@@ -245,7 +261,7 @@ mod tests {
                 let mut worst: f64 = 0.0;
                 for j in 0..6 {
                     let step = Vector6::from_fn(|i, _| if i == j { h } else { 0.0 });
-                    let mut column =
+                    let column =
                         (wrench_about(mesh, reduced, &pose, &q, &(velocity - step), &coefficients)
                             - wrench_about(
                                 mesh,
@@ -256,19 +272,6 @@ mod tests {
                                 &coefficients,
                             ))
                             / (2.0 * h);
-                    if !with_angular && j >= 3 {
-                        // The angular damping is left out of `drag_about`: take it out here.
-                        let angular = angular_damping_stiffness(
-                            &omega,
-                            damping.wetted_fraction,
-                            mesh.volume(),
-                            water.density(),
-                            &coefficients,
-                        );
-                        for i in 0..3 {
-                            column[3 + i] -= angular[(i, j - 3)];
-                        }
-                    }
                     worst = worst.max((column - k.column(j)).norm());
                 }
                 assert!(
