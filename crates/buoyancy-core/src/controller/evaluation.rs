@@ -97,10 +97,10 @@ pub(crate) fn evaluate(
     let mut damping = semi_implicit_damping(explicit, others, &relative_velocity, omega, &mass, dt);
     // Stiff: one rate for the whole wrench would throw a direction of motion back; each
     // direction is damped at its own rate through the damping's stiffness instead.
-    if overshoots(explicit, &relative_velocity, omega, &mass, dt) {
-        let Some(stiffness) = damping_stiffness(body, state, settings, report.wetted_area) else {
-            return Evaluation::NotFinite;
-        };
+    // (A stiffness that overflows leaves the one rate's answer.)
+    if overshoots(explicit, &relative_velocity, omega, &mass, dt)
+        && let Some(stiffness) = damping_stiffness(body, state, settings, report.wetted_area)
+    {
         damping = implicit_damping(
             explicit,
             &stiffness,
@@ -132,7 +132,7 @@ pub(crate) fn evaluate(
 /// The stiffness `K = −∂W/∂q̇` of the body's damping about its center of mass (world frame):
 /// each part's pressure drag (over its reduced copy if it has one), as [`sum_parts`] sums it,
 /// and the angular damping of the whole body for the parts' total `wetted_area`. `None` when
-/// the core rejects a pose or velocity (not finite).
+/// the core rejects a pose or velocity (not finite) or the stiffness overflows.
 fn damping_stiffness(
     body: &FloatingBody,
     state: &BodyState,
