@@ -1,6 +1,7 @@
 """Python-side performance of the bindings (a benchmark script, not a test).
 
-    python benches/python_overhead.py [--poses 10000] [--repeat 7] [--only calls|batch|rapier]
+    python benches/python_overhead.py [--poses 10000] [--repeat 7]
+                                      [--only calls|batch|rapier|add]
                                       [--bodies 100] [--steps 30] [--before REV]
 
 1. Per-call cost of ``mesh.buoyancy`` on the 12-triangle cube (goal: at most 3 µs), for the
@@ -17,6 +18,10 @@
    re-implementation before the controller: ``--before ced904e``). Each figure is the median
    step of a burst of ``--steps`` steps, the best of ``--repeat`` bursts, the implementations
    taking turns so that the machine's load weighs on all of them alike.
+4. ``Controller.add`` of 1,000 bodies of a sphere of 2,352 triangles (more than the damping's
+   reduced copy takes): all of one ``Mesh``, and each of its own equal ``Mesh`` (built in the
+   loop, its own cost timed apart). The bodies share the core mesh and its reduced copy, built
+   once; best of ``--repeat`` runs.
 """
 
 from __future__ import annotations
@@ -267,11 +272,42 @@ def rapier_overhead(args: argparse.Namespace) -> None:
     )
 
 
+def add_bodies(args: argparse.Namespace) -> None:
+    sphere = buoyancy.shapes.uv_sphere(0.62, 49, 25)
+    vertices, faces = sphere.vertices, sphere.faces
+    n = 1000
+
+    def one_mesh() -> None:
+        controller = buoyancy.Controller()
+        for _ in range(n):
+            controller.add(sphere)
+
+    def equal_meshes() -> None:
+        controller = buoyancy.Controller()
+        for _ in range(n):
+            controller.add(buoyancy.Mesh(vertices, faces))
+
+    def meshes_alone() -> None:
+        for _ in range(n):
+            buoyancy.Mesh(vertices, faces)
+
+    repeat = max(1, min(args.repeat, 3))
+    print(f"Controller.add of {n} bodies of a sphere of {sphere.n_triangles} triangles, best of {repeat}:")
+    for name, run in (
+        ("one Mesh", one_mesh),
+        ("equal Meshes", equal_meshes),
+        ("(building the Meshes alone)", meshes_alone),
+    ):
+        best = min(timeit.repeat(run, number=1, repeat=repeat))
+        print(f"  {name:<28} {best:8.3f} s  ({best / n * 1e6:8.1f} µs a body)")
+    print()
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--poses", type=int, default=10_000)
     parser.add_argument("--repeat", type=int, default=7)
-    parser.add_argument("--only", choices=["calls", "batch", "rapier"], help="run one section only")
+    parser.add_argument("--only", choices=["calls", "batch", "rapier", "add"], help="run one section only")
     parser.add_argument("--bodies", type=int, default=100, help="bodies of the rapier section (default 100)")
     parser.add_argument("--steps", type=int, default=30, help="steps per burst of the rapier section (default 30)")
     parser.add_argument(
@@ -280,7 +316,7 @@ def main() -> int:
     args = parser.parse_args()
 
     print(f"buoyancy {buoyancy.__version__}, Python {sys.version.split()[0]}, {os.cpu_count()} CPUs\n")
-    sections = {"calls": calls, "batch": batch, "rapier": rapier_overhead}
+    sections = {"calls": calls, "batch": batch, "rapier": rapier_overhead, "add": add_bodies}
     for key, section in sections.items():
         if args.only in (None, key):
             section(args)
