@@ -72,10 +72,11 @@ Stability
     metric of the body's mass and inertia (locked axes left out), so that a light body reaches
     the damping model's terminal velocity and a body dropped fast into the water neither
     overshoots nor oscillates; at rest (``G = 0``) it is one factor on the whole wrench, which
-    keeps its line of action. Where that one rate would throw a direction of motion back (a fast
-    spin under a strong angular damping while the body sinks fast), the damping is taken
-    implicitly through its stiffness ``K = −∂W/∂q̇`` instead, each direction at its own rate. A body whose pose, velocity or result is not finite gets no force
-    (its share is taken back) and its report's ``outcome`` is ``"not_finite"``.
+    keeps its line of action. Where that one rate would throw a direction of motion back faster
+    than it came (a fast spin under a strong angular damping while the body sinks fast), the
+    damping is taken implicitly through its stiffness ``K = −∂W/∂q̇`` instead, each direction at
+    its own rate. A body whose pose, velocity or result is not finite gets no force (its share
+    is taken back) and its report's ``outcome`` is ``"not_finite"``.
 
 Frames and units
     The water, forces and torques are in rapier's world frame, SI units. A body's meshes are in

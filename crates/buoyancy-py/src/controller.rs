@@ -380,10 +380,10 @@ fn core_parts(py: Python<'_>, parts: &[GivenPart], bodies: &[Vec<GivenPart>]) ->
 ///     application's own forces and ``α = √(W·M⁻¹W / q̇·M·q̇)`` the damping rate in the metric of
 ///     the body's mass and inertia, so that light bodies reach the model's terminal velocity and
 ///     bodies dropped fast do not overshoot. Where that one rate would throw a direction of
-///     motion back (a fast spin under a strong angular damping while the body sinks fast), the
-///     damping is taken implicitly through its stiffness ``K = −∂W/∂q̇`` instead, each direction
-///     at its own rate. A body whose pose, velocity or result is not finite
-///     gets no force (its share is taken back); its report's outcome is ``"not_finite"``.
+///     motion back faster than it came (a fast spin under a strong angular damping while the
+///     body sinks fast), the damping is taken implicitly through its stiffness ``K = −∂W/∂q̇``
+///     instead, each direction at its own rate. A body whose pose, velocity or result is not
+///     finite gets no force (its share is taken back); its report's outcome is ``"not_finite"``.
 ///
 /// Waves
 ///     The water may carry waves (``Water(waves=...)``: an :class:`AiryWave`, :class:`Waves`

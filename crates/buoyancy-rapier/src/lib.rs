@@ -101,11 +101,11 @@
 //!
 //! When buoyancy, weight and the application's forces balance (`G = 0`), `W'` is `W` scaled by
 //! one factor, so its line of action stays. Where that one rate would throw a direction of
-//! motion back (a direction much stiffer than the motion as a whole, such as a fast spin under a
-//! strong angular damping while the body sinks fast), the damping is taken implicitly through
-//! its stiffness `K = −∂W/∂q̇` instead, each direction at its own rate (see the core's
-//! [`controller`](buoyancy_core::controller) documentation, "Stability"). A body moving freely reaches the terminal velocity of
-//! the damping model (where `W = −G`). The scheme assumes the body moves under `G` alone: a light
+//! motion back faster than it came (a direction much stiffer than the motion as a whole, such
+//! as a fast spin under a strong angular damping while the body sinks fast), the damping is
+//! taken implicitly through its stiffness `K = −∂W/∂q̇` instead, each direction at its own rate
+//! (see the core's [`controller`](buoyancy_core::controller) documentation, "Stability"). A body
+//! moving freely reaches the terminal velocity of the damping model (where `W = −G`). The scheme assumes the body moves under `G` alone: a light
 //! body held by contacts (on the bottom, against a dock in a current) feels less drag than the
 //! model says, and part of its net weight taken off while it jitters. Gravity is taken as the
 //! water's (`g` against its normal, times the body's gravity scale). A body whose pose, velocity

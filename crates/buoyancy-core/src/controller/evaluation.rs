@@ -95,8 +95,9 @@ pub(crate) fn evaluate(
     let mass = GeneralizedMass::of(state);
     let omega = &state.angular_velocity;
     let mut damping = semi_implicit_damping(explicit, others, &relative_velocity, omega, &mass, dt);
-    // Stiff: one rate for the whole wrench would throw a direction of motion back; each
-    // direction is damped at its own rate through the damping's stiffness instead.
+    // Stiff: one rate for the whole wrench would throw a direction of motion back faster than
+    // it came; each direction is damped at its own rate through the damping's stiffness
+    // instead.
     // (A stiffness that overflows leaves the one rate's answer.)
     if overshoots(explicit, &relative_velocity, omega, &mass, dt)
         && let Some(stiffness) = damping_stiffness(body, state, settings, report.wetted_area)

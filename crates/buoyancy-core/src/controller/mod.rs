@@ -47,20 +47,22 @@
 //!
 //! When buoyancy, weight and the application's forces balance (`G = 0`), `W'` is `W` scaled by
 //! one factor, so its line of action stays. Where that one rate would throw a direction of
-//! motion back (`W/(1 + α·dt)` alone turning `v − v_water` or `ω` against itself over the step: a
-//! direction much stiffer than the motion as a whole, such as a fast spin under a strong angular
-//! damping while the body sinks fast), the damping is taken at the end of the step through its
-//! stiffness `K = −∂W/∂q̇` instead ([`DampingStiffness`](crate::damping::DampingStiffness),
-//! exact for the model), each direction at its own rate:
+//! motion back faster than it came (`W/(1 + α·dt)` alone turning `v − v_water` or `ω` against
+//! itself by more than its size over the step, an oscillation that grows: a direction much
+//! stiffer than the motion as a whole, such as a fast spin under a strong angular damping while
+//! the body sinks fast), the damping is taken at the end of the step through its stiffness
+//! `K = −∂W/∂q̇` instead ([`DampingStiffness`](crate::damping::DampingStiffness), exact for the
+//! model), each direction at its own rate:
 //!
 //! ```text
 //! (I + dt·M⁻¹K)·Δq̇ = dt·M⁻¹·(G + W),    W' = W − K·Δq̇.
 //! ```
 //!
-//! That costs a second pass over the body's drag surface, for such bodies only. A body moving freely reaches the terminal velocity of
-//! the damping model (where `W = −G`). Gravity is taken as the water's (`g` against its normal,
-//! times the body's gravity scale). A body whose pose, velocity or result is not finite gets no
-//! force (the previous one is taken back); its report's outcome is [`Outcome::NotFinite`].
+//! That costs a second pass over the body's drag surface, for such bodies only. A body moving
+//! freely reaches the terminal velocity of the damping model (where `W = −G`). Gravity is taken
+//! as the water's (`g` against its normal, times the body's gravity scale). A body whose pose,
+//! velocity or result is not finite gets no force (the previous one is taken back); its
+//! report's outcome is [`Outcome::NotFinite`].
 //!
 //! # Bodies of several parts
 //! Buoyancy and pressure drag add up over the parts. The angular damping,
