@@ -54,6 +54,7 @@ mod stiffness;
 use nalgebra::{Matrix3, Matrix6, Point3, Vector3};
 
 use stiffness::DragStiffness;
+pub(crate) use stiffness::add_block;
 pub use stiffness::{DampingStiffness, angular_damping_stiffness};
 
 use crate::clip::clip_below;
@@ -270,12 +271,16 @@ pub fn angular_damping<T: Real>(
     density: T,
     coefficients: &DampingCoefficients<T>,
 ) -> Vector3<T> {
-    let size = density * volume.max(T::zero()).powf(T::from_f64_lossy(5.0 / 3.0));
     -omega
-        * (wetted_fraction
-            * size
+        * (angular_size(wetted_fraction, volume, density)
             * (coefficients.angular_drag_linear
                 + coefficients.angular_drag_quadratic * omega.norm()))
+}
+
+/// `s = f·ρ·V^{5/3}` (kg·m², a negative `V` counting as zero): the scale of the angular damping
+/// for wetted fraction `f`, volume `V` and water density `ρ`.
+pub(crate) fn angular_size<T: Real>(wetted_fraction: T, volume: T, density: T) -> T {
+    wetted_fraction * density * volume.max(T::zero()).powf(T::from_f64_lossy(5.0 / 3.0))
 }
 
 /// The pressure drag of the model, summed over wetted triangles: the body's velocity and the

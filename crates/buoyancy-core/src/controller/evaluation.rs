@@ -9,7 +9,7 @@ use super::semi_implicit::{GeneralizedMass, implicit_damping, overshoots, semi_i
 use super::settings::Settings;
 use super::state::{BodyState, Motion};
 use super::wrench::Wrench;
-use crate::damping::{angular_damping, angular_damping_stiffness};
+use crate::damping::{add_block, angular_damping, angular_damping_stiffness};
 use crate::waves::WaterSurface;
 
 /// A moving free surface at the time of a step.
@@ -169,11 +169,7 @@ fn damping_stiffness(
             water.density(),
             damping,
         );
-        for i in 0..3 {
-            for j in 0..3 {
-                stiffness[(3 + i, 3 + j)] += angular[(i, j)];
-            }
-        }
+        add_block(&mut stiffness, 3, 3, &angular);
     }
     Some(stiffness)
 }

@@ -75,7 +75,7 @@ pub fn angular_damping_stiffness<T: Real>(
     density: T,
     coefficients: &DampingCoefficients<T>,
 ) -> Matrix3<T> {
-    let size = wetted_fraction * density * volume.max(T::zero()).powf(T::from_f64_lossy(5.0 / 3.0));
+    let size = super::angular_size(wetted_fraction, volume, density);
     let (a1, a2) = (
         coefficients.angular_drag_linear(),
         coefficients.angular_drag_quadratic(),
@@ -151,7 +151,12 @@ impl<T: Real> DragStiffness<T> {
 
 /// `m[row.., column..] += block` for a 3×3 block.
 #[inline(always)]
-fn add_block<T: Real>(m: &mut Matrix6<T>, row: usize, column: usize, block: &Matrix3<T>) {
+pub(crate) fn add_block<T: Real>(
+    m: &mut Matrix6<T>,
+    row: usize,
+    column: usize,
+    block: &Matrix3<T>,
+) {
     for i in 0..3 {
         for j in 0..3 {
             m[(row + i, column + j)] += block[(i, j)];
