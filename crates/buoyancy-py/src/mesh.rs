@@ -1,8 +1,6 @@
 //! `Mesh`: a closed triangle mesh, and its queries (buoyancy at one pose or many, damping) and
 //! transformed copies.
 
-use std::collections::hash_map::DefaultHasher;
-use std::hash::{Hash, Hasher};
 use std::sync::{Arc, OnceLock};
 
 use buoyancy_core::nalgebra::{Matrix4, Point3, Translation3, UnitQuaternion, Vector3};
@@ -153,18 +151,26 @@ impl PyMesh {
     }
 
     /// The hash of the vertices (as given) and the faces, consistent with `==`, computed once.
+    ///
+    /// The words (the coordinates' bits, `-0.0` as `0.0`, which it equals; the reorientation;
+    /// three indices a triangle) are mixed one multiply each, as rustc's `FxHasher` does: a
+    /// 2,352-triangle mesh hashes in a few µs, not the 60 µs of `DefaultHasher`. Equal meshes
+    /// hash alike; telling unequal ones apart is `==`'s work.
     pub fn content_hash(&self) -> u64 {
         *self.hash.get_or_init(|| {
-            let mut h = DefaultHasher::new();
-            for p in &self.vertices {
-                // `+ 0.0` makes -0.0 hash as 0.0, which it equals.
-                for x in [p.x, p.y, p.z] {
-                    (x + 0.0).to_bits().hash(&mut h);
-                }
+            let mix =
+                |h: u64, word: u64| (h.rotate_left(5) ^ word).wrapping_mul(0x517c_c1b7_2722_0a95);
+            let mut h = self.vertices.iter().fold(0, |h, p| {
+                [p.x, p.y, p.z]
+                    .iter()
+                    .fold(h, |h, x| mix(h, (x + 0.0).to_bits()))
+            });
+            h = mix(h, u64::from(self.inner.was_reoriented()));
+            for t in self.inner.triangles() {
+                h = mix(h, u64::from(t[0]) | u64::from(t[1]) << 32);
+                h = mix(h, u64::from(t[2]));
             }
-            self.inner.was_reoriented().hash(&mut h);
-            self.inner.triangles().hash(&mut h);
-            h.finish()
+            h
         })
     }
 
