@@ -455,9 +455,10 @@ class FloatingBodies:
         or a tuple ``(mesh, position, quaternion)`` of a mesh in its own frame placed on the body
         (``x_body = R @ x_mesh + position``, the quaternion ``(x, y, z, w)``), e.g. one per
         collider with its ``position_wrt_parent``. ``water``, ``method``, ``damping`` and
-        ``damping_resolution`` override the world's for this body (``water``: a still one, its density, level and normal; the
-        body floats on the world's waves, if any). Registering a body again replaces its meshes and overrides
-        (the force already applied is kept track of)."""
+        ``damping_resolution`` override the world's for this body (``water``: a still one, its
+        density, level and normal; the body floats on the world's waves, if any). Registering a
+        body again replaces its meshes and overrides (the force already applied is kept track
+        of)."""
         if not isinstance(mesh, (Mesh, list, tuple)):
             raise TypeError(
                 f"mesh: expected a buoyancy.Mesh, or a list of meshes and (mesh, position, quaternion) "
