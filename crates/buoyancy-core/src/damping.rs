@@ -284,8 +284,10 @@ pub(crate) fn angular_size<T: Real>(wetted_fraction: T, volume: T, density: T) -
 }
 
 /// The pressure drag of the model, summed over wetted triangles: the body's velocity and the
-/// coefficients, and the running sums, all in the mesh frame, about the centroid.
-struct Drag<T: Real> {
+/// coefficients, and the running sums, all in the mesh frame, about the centroid; with
+/// `STIFFNESS`, its stiffness too (a parameter of the type, so that the drag alone carries no
+/// test of it in its hot loop).
+struct Drag<T: Real, const STIFFNESS: bool> {
     /// Velocity of the centroid relative to the water, and angular velocity.
     velocity: Vector3<T>,
     omega: Vector3<T>,
@@ -296,11 +298,11 @@ struct Drag<T: Real> {
     torque: Vector3<T>,
     /// Twice the wetted area.
     double_area: T,
-    /// The stiffness, when asked for.
-    stiffness: Option<DragStiffness<T>>,
+    /// The stiffness (zero unless `STIFFNESS`).
+    stiffness: DragStiffness<T>,
 }
 
-impl<T: Real> Drag<T> {
+impl<T: Real, const STIFFNESS: bool> Drag<T, STIFFNESS> {
     /// Adds the wetted triangle `p` (corners relative to the centroid) of outward unit normal
     /// `normal` and twice the area `double_area`: its area, and the drag on the part of it facing the
     /// flow. A triangle of zero area adds nothing.
@@ -361,13 +363,14 @@ impl<T: Real> Drag<T> {
         self.force -= normal * pressure;
         // −∫ p × P n̂ dA = n̂ × ∫ P p dA
         self.torque += normal.cross(&moment);
-        if let Some(stiffness) = &mut self.stiffness {
-            stiffness.add_piece(&q, &u, normal, area, self.linear, self.quadratic);
+        if STIFFNESS {
+            self.stiffness
+                .add_piece(&q, &u, normal, area, self.linear, self.quadratic);
         }
     }
 }
 
-impl<T: Real> Drag<T> {
+impl<T: Real, const STIFFNESS: bool> Drag<T, STIFFNESS> {
     /// No triangle yet: the velocity of the centroid relative to the water (`linear_velocity`
     /// minus the current) and `angular_velocity`, world frame, brought into the mesh frame by
     /// the transpose of `rotation` (mesh → world).
@@ -377,7 +380,6 @@ impl<T: Real> Drag<T> {
         angular_velocity: &Vector3<T>,
         water: &Water<T>,
         coefficients: &DampingCoefficients<T>,
-        with_stiffness: bool,
     ) -> Self {
         let rotation_t = rotation.transpose();
         Drag {
@@ -388,7 +390,7 @@ impl<T: Real> Drag<T> {
             force: Vector3::zeros(),
             torque: Vector3::zeros(),
             double_area: T::zero(),
-            stiffness: with_stiffness.then(DragStiffness::zero),
+            stiffness: DragStiffness::zero(),
         }
     }
 
@@ -434,7 +436,7 @@ impl<T: Real> Mesh<T> {
         coefficients: &DampingCoefficients<T>,
     ) -> Result<Damping<T>, Error> {
         let motion = (linear_velocity, angular_velocity);
-        self.damping_over(None, pose, motion, water, coefficients, false)
+        self.damping_over::<false>(None, pose, motion, water, coefficients)
             .map(|(damping, _)| damping)
     }
 
@@ -458,7 +460,7 @@ impl<T: Real> Mesh<T> {
         coefficients: &DampingCoefficients<T>,
     ) -> Result<Damping<T>, Error> {
         let motion = (linear_velocity, angular_velocity);
-        self.damping_over(Some(reduced), pose, motion, water, coefficients, false)
+        self.damping_over::<false>(Some(reduced), pose, motion, water, coefficients)
             .map(|(damping, _)| damping)
     }
 
@@ -502,7 +504,7 @@ impl<T: Real> Mesh<T> {
     ) -> Result<(Damping<T>, DampingStiffness<T>), Error> {
         let motion = (linear_velocity, angular_velocity);
         let (damping, stiffness) =
-            self.damping_over(reduced, pose, motion, water, coefficients, true)?;
+            self.damping_over::<true>(reduced, pose, motion, water, coefficients)?;
         Ok((
             damping,
             stiffness.unwrap_or(DampingStiffness {
@@ -518,11 +520,11 @@ impl<T: Real> Mesh<T> {
     /// only the triangles near the waterline are classified; the drag itself is not linear in
     /// the velocity over a node (only the part facing the flow counts), so every wetted
     /// triangle is still integrated. A reduced copy is small: every triangle is examined.
-    fn integrate_drag(
+    fn integrate_drag<const STIFFNESS: bool>(
         &self,
         reduced: Option<&ReducedMesh<T>>,
         frame: &Frame<T>,
-        drag: &mut Drag<T>,
+        drag: &mut Drag<T, STIFFNESS>,
     ) {
         if let Some(reduced) = reduced {
             for (i, normal) in reduced.normals.iter().enumerate() {
@@ -553,14 +555,13 @@ impl<T: Real> Mesh<T> {
     /// scaled by [`ReducedMesh::area_scale`]), and with `with_stiffness` its stiffness: the
     /// checks, the early returns and the angular damping of [`Mesh::damping`]. The stiffness
     /// is `None` where the damping returns early.
-    fn damping_over(
+    fn damping_over<const STIFFNESS: bool>(
         &self,
         reduced: Option<&ReducedMesh<T>>,
         pose: &Pose<T>,
         (linear_velocity, angular_velocity): (&Vector3<T>, &Vector3<T>),
         water: &Water<T>,
         coefficients: &DampingCoefficients<T>,
-        with_stiffness: bool,
     ) -> Result<(Damping<T>, Option<DampingStiffness<T>>), Error> {
         let frame = Frame::new(self, pose, water)?;
         if !linear_velocity
@@ -575,13 +576,12 @@ impl<T: Real> Mesh<T> {
             return Ok((Damping::zero(frame.center_of_mass), None));
         }
         // Everything in the mesh frame, relative to the centroid.
-        let mut drag = Drag::new(
+        let mut drag = Drag::<T, STIFFNESS>::new(
             &frame.rotation,
             linear_velocity,
             angular_velocity,
             water,
             coefficients,
-            with_stiffness,
         );
         self.integrate_drag(reduced, &frame, &mut drag);
 
@@ -608,16 +608,12 @@ impl<T: Real> Mesh<T> {
             wetted_area,
             wetted_fraction,
         };
-        let stiffness = drag.stiffness.map(|k| {
+        let stiffness = STIFFNESS.then(|| {
+            let k = drag.stiffness;
             // K_world = Q·K·Qᵀ, Q = diag(R, R): both halves of `a` turn with the mesh.
             let mut rotation = Matrix6::zeros();
-            for (row, column) in [(0, 0), (3, 3)] {
-                for i in 0..3 {
-                    for j in 0..3 {
-                        rotation[(row + i, column + j)] = frame.rotation[(i, j)];
-                    }
-                }
-            }
+            add_block(&mut rotation, 0, 0, &frame.rotation);
+            add_block(&mut rotation, 3, 3, &frame.rotation);
             DampingStiffness {
                 drag: rotation * k.matrix * rotation.transpose(),
                 angular: angular_damping_stiffness(
