@@ -3,6 +3,7 @@
 use alloc::sync::Arc;
 use alloc::vec::Vec;
 
+use super::last_evaluation::LastEvaluation;
 use super::report::FloatReport;
 use super::settings::{BodyOptions, DampingResolution};
 use super::share::AppliedShare;
@@ -33,6 +34,8 @@ pub(crate) struct FloatingBody {
     pub surface_area: f64,
     pub share: AppliedShare,
     pub report: FloatReport,
+    /// The last evaluation in still water, taken again for the same inputs.
+    pub last: Option<LastEvaluation>,
 }
 
 impl FloatingBody {
@@ -56,6 +59,7 @@ impl FloatingBody {
             surface_area,
             share: AppliedShare::default(),
             report: FloatReport::default(),
+            last: None,
         })
     }
 

@@ -33,6 +33,12 @@
 //! than 0.1 % (of the force plus the body's weight; the torque also by that force times the
 //! body's size) since it was last awake, so that slow changes, a rising tide, add up.
 //!
+//! # Bodies at rest
+//! In still water, a body whose state, settings, step and share are exactly those of its last
+//! evaluation (a sleeping body, its pose held by the engine) is not evaluated again: its last
+//! evaluation is taken again, which is the same to the bit. On waves every step is evaluated
+//! (the surface moves).
+//!
 //! # Stability
 //! The damping is made semi-implicit, so that a light body (large drag for its mass) and a body
 //! dropped fast into the water neither overshoot nor oscillate. About the current velocity
@@ -131,6 +137,7 @@
 
 mod body;
 mod evaluation;
+mod last_evaluation;
 mod report;
 mod rest;
 mod semi_implicit;
@@ -150,6 +157,7 @@ pub use state::{BodyState, Command, Motion};
 
 use body::FloatingBody;
 use evaluation::{Evaluation, Sea, evaluate};
+use last_evaluation::LastEvaluation;
 
 use crate::Error;
 use crate::reduced_mesh::ReducedMesh;
@@ -295,6 +303,8 @@ impl Controller {
         let copies = self.reduced_for(&self.bodies[index]);
         let body = &mut self.bodies[index];
         (body.reduced, body.resolution) = copies;
+        // Other copies, another damping: evaluate the body afresh.
+        body.last = None;
     }
 
     /// The reduced copies of `body`'s meshes for its own resolution, else the controller's,
@@ -417,7 +427,30 @@ impl Controller {
         let one = |(body, (state, command)): (&mut FloatingBody, (&BodyState, &mut Command))| {
             body.share.forget_if_wiped(state);
             let resolved = settings.resolve(&body.options);
-            let evaluation = evaluate(body, state, &resolved, sea, dt);
+            // In still water, the same inputs as the last step's give the same evaluation.
+            let evaluation = match sea {
+                None => match body
+                    .last
+                    .and_then(|last| last.of(state, &resolved, dt, &body.share))
+                {
+                    Some(evaluation) => evaluation,
+                    None => {
+                        let evaluation = evaluate(body, state, &resolved, None, dt);
+                        body.last = Some(LastEvaluation::new(
+                            state,
+                            &resolved,
+                            dt,
+                            &body.share,
+                            evaluation,
+                        ));
+                        evaluation
+                    }
+                },
+                Some(_) => {
+                    body.last = None;
+                    evaluate(body, state, &resolved, sea, dt)
+                }
+            };
             body.report = evaluation.report(state.center_of_mass);
             let (force, torque) = match evaluation {
                 Evaluation::Inactive => {
@@ -457,7 +490,126 @@ impl Controller {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::waves::CalmSurface;
+    use crate::waves::{AiryComponent, AiryWaves, CalmSurface};
+    use crate::{Mesh, Pose, Water, shape};
+    use nalgebra::{Matrix3, Point3, Translation3, UnitQuaternion, Vector3};
+
+    /// A body held by the engine in the same state (asleep, still) for steps on end, while the
+    /// controller's water, the body's damping resolution and the waves change between some of
+    /// them: every step's report and command are those of a fresh evaluation of its inputs, and
+    /// the steps whose inputs repeat the last ones' take its evaluation again.
+    #[test]
+    fn the_same_inputs_take_the_last_evaluation_again() {
+        let (v, t) = shape::uv_sphere::<f64>(0.5, 40, 20).unwrap();
+        let sphere = Arc::new(Mesh::new(v, t).unwrap());
+        let mut controller = Controller::default();
+        let part = Part {
+            mesh: sphere,
+            shape_to_body: Pose::identity(),
+        };
+        controller
+            .add(alloc::vec![part], BodyOptions::default())
+            .unwrap();
+        let pose = Pose::from_parts(
+            Translation3::new(0.1, -0.1, 0.2),
+            UnitQuaternion::from_euler_angles(0.2, 0.1, -0.3),
+        );
+        let mut state = BodyState {
+            pose,
+            center_of_mass: pose * Point3::origin(),
+            linear_velocity: Vector3::zeros(),
+            angular_velocity: Vector3::zeros(),
+            mass: 200.0,
+            inverse_mass: Vector3::repeat(1.0 / 200.0),
+            inverse_inertia: Matrix3::identity() / 20.0,
+            gravity_scale: 1.0,
+            applied_force: Vector3::zeros(),
+            applied_torque: Vector3::zeros(),
+            motion: state::Motion::Dynamic,
+            sleeping: true,
+        };
+        let sea = Arc::new(
+            AiryWaves::new(
+                alloc::vec![AiryComponent {
+                    amplitude: 0.1,
+                    wavelength: 12.0,
+                    direction: Vector3::x(),
+                    phase: 0.0,
+                }],
+                None,
+            )
+            .unwrap(),
+        );
+        let dt = 1.0 / 60.0;
+        let mut commands = [Command::default()];
+        let mut taken_again = 0;
+        for step in 0..14 {
+            match step {
+                4 => {
+                    controller.settings_mut().water = Water::default().with_density(1025.0).unwrap()
+                }
+                7 => {
+                    controller.set_body_damping_resolution(0, Some(DampingResolution::Full));
+                }
+                9 => controller.set_surface(Some(sea.clone())),
+                11 => controller.set_surface(None),
+                _ => {}
+            }
+            let body = &controller.bodies[0];
+            let resolved = controller.settings.resolve(&body.options);
+            let fresh = evaluate(
+                body,
+                &state,
+                &resolved,
+                controller.surface.as_deref().map(|surface| Sea {
+                    surface,
+                    time: controller.time,
+                }),
+                dt,
+            );
+            // (On waves the time moves on: never taken again.)
+            let repeats = controller.surface.is_none()
+                && body
+                    .last
+                    .is_some_and(|last| last.of(&state, &resolved, dt, &body.share).is_some());
+            taken_again += usize::from(repeats);
+            controller.step(&[state], dt, &mut commands);
+            assert_eq!(
+                controller.bodies[0].report,
+                fresh.report(state.center_of_mass),
+                "{step}"
+            );
+            // The engine adds the command.
+            state.applied_force += commands[0].add_force;
+            state.applied_torque += commands[0].add_torque;
+        }
+        // Steps 2, 3, 6, 8 and 13 repeat the inputs of the step before. Steps 1, 5 and 12
+        // follow a command that changed the engine's force, steps 4, 7 and 11 a change of the
+        // water, the resolution or the surface, and steps 9 and 10 are on waves.
+        assert_eq!(taken_again, 5);
+        // And the step does take it: a remembered evaluation of these very inputs is what the
+        // next step reports.
+        let body = &mut controller.bodies[0];
+        let resolved = controller.settings.resolve(&body.options);
+        let marked = FloatReport {
+            submerged_volume: 123.0,
+            ..body.report
+        };
+        let remembered = Evaluation::Floating {
+            report: marked,
+            force: Vector3::zeros(),
+            torque: Vector3::zeros(),
+        };
+        body.last = Some(LastEvaluation::new(
+            &state,
+            &resolved,
+            dt,
+            &body.share,
+            remembered,
+        ));
+        controller.step(&[state], dt, &mut commands);
+        assert_eq!(controller.bodies[0].report, marked);
+    }
 
     #[test]
     fn only_a_finite_non_negative_step_advances_the_time() {
