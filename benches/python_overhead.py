@@ -196,10 +196,14 @@ class Scene:
         body (the controller-based adapter's)."""
         floating = self.floating
         _, record, scalars = floating._read(self.world.rigid_bodies)
-        states = floating._states(record, scalars)
+        states = list(floating._states(record, scalars))
+        # Each call a velocity other than the last call's (a nudge of 10⁻⁶ m/s back and forth),
+        # as in a simulation: the same inputs again would take the last evaluations again.
+        velocities = (np.array(states[3]), np.array(states[3]) + (1e-6, 0.0, 0.0))
         step = floating._controller.step
         times = []
-        for _ in range(steps):
+        for k in range(steps):
+            states[3] = velocities[k % 2]
             t0 = time.perf_counter()
             step(self.dt, *states)
             times.append(time.perf_counter() - t0)
