@@ -199,7 +199,7 @@ class Scene:
         states = list(floating._states(record, scalars))
         # Each call a velocity other than the last call's (a nudge of 10⁻⁶ m/s back and forth),
         # as in a simulation: the same inputs again would take the last evaluations again.
-        velocities = (np.array(states[3]), np.array(states[3]) + (1e-6, 0.0, 0.0))
+        velocities = (np.array(states[3]), np.array(states[3]) + np.array([1e-6, 0.0, 0.0]))
         step = floating._controller.step
         times = []
         for k in range(steps):
