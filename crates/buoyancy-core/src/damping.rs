@@ -552,7 +552,7 @@ impl<T: Real> Mesh<T> {
     }
 
     /// The damping with the pressure drag summed over this mesh or `reduced` (its wetted area
-    /// scaled by [`ReducedMesh::area_scale`]), and with `with_stiffness` its stiffness: the
+    /// scaled by [`ReducedMesh::area_scale`]), and with `STIFFNESS` its stiffness: the
     /// checks, the early returns and the angular damping of [`Mesh::damping`]. The stiffness
     /// is `None` where the damping returns early.
     fn damping_over<const STIFFNESS: bool>(
