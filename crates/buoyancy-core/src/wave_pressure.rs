@@ -298,42 +298,37 @@ impl<T: Real> Mesh<T> {
         let n = &frame.normal_local;
         let vertices = &self.vertices[first..first + heights.len()];
         let count = heights.len();
-        let (mut points, mut wet) = (Vec::with_capacity(count), Vec::with_capacity(count));
+        let (mut points, mut evaluated) = (Vec::with_capacity(count), Vec::with_capacity(count));
         // The heights above the layer's middle are taken as the walk takes them, `n·x + h_c'`.
-        let layer_height = layer.map(|l| frame.height - l.mid);
+        let layer = layer.map(|l| (l.reach, frame.height - l.mid));
         for (j, (h, v)) in heights.iter_mut().zip(vertices).enumerate() {
             let local = n.dot(v);
             let still = local + frame.height;
             *h = still;
-            let (Some(Layer { reach, .. }), Some(layer_height)) = (layer, layer_height) else {
-                points.push(frame.center_of_mass + frame.rotation * v - frame.normal * still);
-                wet.push(j as u32);
-                continue;
-            };
-            let above_middle = local + layer_height;
-            if above_middle > reach + self.longest_edge {
-                *h = above_middle - reach;
-                continue;
+            if let Some((reach, layer_height)) = layer {
+                let above_middle = local + layer_height;
+                if above_middle > reach + self.longest_edge {
+                    *h = above_middle - reach;
+                    continue;
+                }
             }
             points.push(frame.center_of_mass + frame.rotation * v - frame.normal * still);
-            wet.push(j as u32);
+            evaluated.push(j as u32);
         }
         let mut elevations = alloc::vec![T::zero(); points.len()];
         surface.elevations(water, &points, time, &mut elevations)?;
-        for (&j, eta) in wet.iter().zip(&elevations) {
+        let mut sums = LinearSums::zero();
+        for (&j, eta) in evaluated.iter().zip(&elevations) {
             if !eta.is_finite() {
                 return Err(Error::InvalidSurface {
                     parameter: "surface",
                     reason: "the surface gave a NaN or infinite elevation",
                 });
             }
-            heights[j as usize] -= *eta;
-        }
-        let mut sums = LinearSums::zero();
-        for &j in &wet {
-            let h = heights[j as usize];
-            if h < T::zero() {
-                sums.add(h, &self.vertex_terms[first + j as usize]);
+            let h = &mut heights[j as usize];
+            *h -= *eta;
+            if *h < T::zero() {
+                sums.add(*h, &self.vertex_terms[first + j as usize]);
             }
         }
         Ok(sums)
