@@ -150,12 +150,12 @@ impl<T: Real> HeightGrid<T> {
             return None;
         }
         if self.periodic {
-            let (first, last) = (floor(low), floor(high) + 1.0);
-            if last - first + 1.0 >= n as f64 {
+            let (lowest, last) = (floor(low), floor(high) + 1.0);
+            if last - lowest + 1.0 >= n as f64 {
                 return Some((0, n));
             }
-            let (first, _, _) = self.cell(first, n);
-            Some((first, (last - floor(low)) as usize + 1))
+            let (first, _, _) = self.cell(lowest, n);
+            Some((first, (last - lowest) as usize + 1))
         } else {
             let (first, _, _) = self.cell(low, n);
             let (last, next, _) = self.cell(high, n);
