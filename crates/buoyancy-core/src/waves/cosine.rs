@@ -305,26 +305,22 @@ mod tests {
                 }
             })
             .collect();
-        let one_by_one = |fused: bool| {
+        type AddTerm = fn(&mut [f64], &[f64], &[f64], &[f64], &CosineTerm);
+        let one_by_one = |add: AddTerm| {
             let mut sum = alloc::vec![0.25; n];
             for t in &terms {
-                if fused {
-                    #[cfg(feature = "std")]
-                    add_term::<true>(&mut sum, &x, &y, &z, t);
-                } else {
-                    add_term::<false>(&mut sum, &x, &y, &z, t);
-                }
+                add(&mut sum, &x, &y, &z, t);
             }
             sum
         };
         let mut grouped = alloc::vec![0.25; n];
         add_cosines_with::<false>(&mut grouped, &x, &y, &z, &terms);
-        assert_eq!(grouped, one_by_one(false));
+        assert_eq!(grouped, one_by_one(add_term::<false>));
         #[cfg(feature = "std")]
         {
             let mut grouped = alloc::vec![0.25; n];
             add_cosines_with::<true>(&mut grouped, &x, &y, &z, &terms);
-            assert_eq!(grouped, one_by_one(true));
+            assert_eq!(grouped, one_by_one(add_term::<true>));
         }
     }
 
