@@ -429,12 +429,11 @@ impl Controller {
             let resolved = settings.resolve(&body.options);
             // In still water, the same inputs as the last step's give the same evaluation.
             let evaluation = match sea {
-                None => match body
+                Some(_) => evaluate(body, state, &resolved, sea, dt),
+                None => body
                     .last
                     .and_then(|last| last.of(state, &resolved, dt, &body.share))
-                {
-                    Some(evaluation) => evaluation,
-                    None => {
+                    .unwrap_or_else(|| {
                         let evaluation = evaluate(body, state, &resolved, None, dt);
                         body.last = Some(LastEvaluation::new(
                             state,
@@ -444,12 +443,7 @@ impl Controller {
                             evaluation,
                         ));
                         evaluation
-                    }
-                },
-                Some(_) => {
-                    body.last = None;
-                    evaluate(body, state, &resolved, sea, dt)
-                }
+                    }),
             };
             body.report = evaluation.report(state.center_of_mass);
             let (force, torque) = match evaluation {
