@@ -67,4 +67,11 @@ impl FloatingBody {
     pub fn size(&self) -> f64 {
         libm::cbrt(self.volume.max(0.0))
     }
+
+    /// The wetted fraction `f` of the body's angular damping for its parts' total
+    /// `wetted_area` (m²): over their total surface area, at most 1; `None` for a body of no
+    /// area.
+    pub fn wetted_fraction(&self, wetted_area: f64) -> Option<f64> {
+        (self.surface_area > 0.0).then(|| (wetted_area / self.surface_area).min(1.0))
+    }
 }

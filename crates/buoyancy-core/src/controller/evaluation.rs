@@ -97,8 +97,7 @@ pub(crate) fn evaluate(
     let mut damping = semi_implicit_damping(explicit, others, &relative_velocity, omega, &mass, dt);
     // Stiff: one rate for the whole wrench would throw a direction of motion back faster than
     // it came; each direction is damped at its own rate through the damping's stiffness
-    // instead.
-    // (A stiffness that overflows leaves the one rate's answer.)
+    // instead (a stiffness that overflows leaves the one rate's answer).
     if overshoots(explicit, &relative_velocity, omega, &mass, dt)
         && let Some(stiffness) = damping_stiffness(body, state, settings, report.wetted_area)
     {
@@ -161,10 +160,10 @@ fn damping_stiffness(
             .ok()?;
         stiffness += part_stiffness.drag_about(&center_of_mass);
     }
-    if body.surface_area > 0.0 {
+    if let Some(wetted_fraction) = body.wetted_fraction(wetted_area) {
         let angular = angular_damping_stiffness(
             &omega,
-            (wetted_area / body.surface_area).min(1.0),
+            wetted_fraction,
             body.volume,
             water.density(),
             damping,
@@ -232,8 +231,7 @@ fn sum_parts(
         report.damping_torque += drag.torque_about(&center_of_mass) - drag.angular_torque;
         report.wetted_area += drag.wetted_area;
     }
-    if body.surface_area > 0.0 {
-        let wetted_fraction = (report.wetted_area / body.surface_area).min(1.0);
+    if let Some(wetted_fraction) = body.wetted_fraction(report.wetted_area) {
         report.damping_torque += angular_damping(
             &omega,
             wetted_fraction,
