@@ -6,6 +6,7 @@ use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
 use super::state::BodyState;
 use super::wrench::Wrench;
+use crate::damping::add_block;
 
 /// The generalized mass `M` of a rigid body, `f64`, world frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -150,12 +151,13 @@ pub(crate) fn implicit_damping(
         return damping;
     }
     let mut inverse_mass = Matrix6::zeros();
-    for i in 0..3 {
-        inverse_mass[(i, i)] = mass.inv_mass[i];
-        for j in 0..3 {
-            inverse_mass[(3 + i, 3 + j)] = mass.inv_inertia[(i, j)];
-        }
-    }
+    add_block(
+        &mut inverse_mass,
+        0,
+        0,
+        &Matrix3::from_diagonal(&mass.inv_mass),
+    );
+    add_block(&mut inverse_mass, 3, 3, &mass.inv_inertia);
     let total = |w: &Wrench| {
         Vector6::new(
             w.force.x, w.force.y, w.force.z, w.torque.x, w.torque.y, w.torque.z,
