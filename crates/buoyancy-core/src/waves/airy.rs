@@ -251,11 +251,13 @@ impl<T: Real> WaterSurface<T> for AiryWaves<T> {
         elevations: &mut [T],
     ) -> Result<(), Error> {
         // The positions apart, each axis contiguous, and the sum in f64, so that the loop over
-        // the points vectorises (see `cosine`).
-        let axis = |k: usize| -> Vec<f64> { points.iter().map(|q| q[k].to_f64()).collect() };
-        let (x, y, z) = (axis(0), axis(1), axis(2));
-        let largest = |v: &[f64]| v.iter().fold(0.0, |m: f64, c| m.max(c.abs()));
-        let extent = [largest(&x), largest(&y), largest(&z)];
+        // the points vectorises (see `cosine`); a block of points at a time, on the stack.
+        let mut extent = [0.0_f64; 3];
+        for q in points {
+            for (e, c) in extent.iter_mut().zip(q.iter()) {
+                *e = e.max(c.to_f64().abs());
+            }
+        }
         let terms = resolve(&self.components, water, self.depth)?
             .into_iter()
             .map(|w| {
@@ -271,10 +273,22 @@ impl<T: Real> WaterSurface<T> for AiryWaves<T> {
                 }
             })
             .collect::<Vec<_>>();
-        let mut sum = alloc::vec![0.0; points.len()];
-        cosine::add_cosines(&mut sum, &x, &y, &z, &terms);
-        for (eta, s) in elevations.iter_mut().zip(&sum) {
-            *eta = T::from_f64_lossy(*s);
+        let mut block = [[0.0_f64; cosine::BLOCK]; 4];
+        for (points, elevations) in points
+            .chunks(cosine::BLOCK)
+            .zip(elevations.chunks_mut(cosine::BLOCK))
+        {
+            let n = points.len().min(elevations.len());
+            let [x, y, z, sum] = &mut block;
+            for (i, q) in points[..n].iter().enumerate() {
+                (x[i], y[i], z[i]) = (q.x.to_f64(), q.y.to_f64(), q.z.to_f64());
+            }
+            let sum = &mut sum[..n];
+            sum.fill(0.0);
+            cosine::add_cosines(sum, &x[..n], &y[..n], &z[..n], &terms);
+            for (eta, s) in elevations.iter_mut().zip(sum.iter()) {
+                *eta = T::from_f64_lossy(*s);
+            }
         }
         Ok(())
     }
