@@ -251,25 +251,18 @@ impl<T: Real> WaterSurface<T> for AiryWaves<T> {
         elevations: &mut [T],
     ) -> Result<(), Error> {
         // The positions apart, each axis contiguous, and the sum in f64, so that the loop over
-        // the points vectorises (see `cosine`); a block of points at a time, on the stack.
-        let mut extent = [0.0_f64; 3];
-        for q in points {
-            for (e, c) in extent.iter_mut().zip(q.iter()) {
-                *e = e.max(c.to_f64().abs());
-            }
-        }
-        let terms = resolve(&self.components, water, self.depth)?
+        // the points vectorises (see `cosine`); a block of points at a time, on the stack, each
+        // term's range checked against the block's extent.
+        let mut terms = resolve(&self.components, water, self.depth)?
             .into_iter()
             .map(|w| {
                 // The phase `k·q − ωt + φ`.
                 let k = w.k.map(T::to_f64);
-                let offset = (w.phase - w.omega * time).to_f64();
-                let bound = k.x.abs() * extent[0] + k.y.abs() * extent[1] + k.z.abs() * extent[2];
                 CosineTerm {
                     k: [k.x, k.y, k.z],
-                    offset,
+                    offset: (w.phase - w.omega * time).to_f64(),
                     amplitude: w.amplitude.to_f64(),
-                    in_range: cosine::in_range(bound + offset.abs()),
+                    in_range: false,
                 }
             })
             .collect::<Vec<_>>();
@@ -280,8 +273,17 @@ impl<T: Real> WaterSurface<T> for AiryWaves<T> {
         {
             let n = points.len().min(elevations.len());
             let [x, y, z, sum] = &mut block;
+            let mut extent = [0.0_f64; 3];
             for (i, q) in points[..n].iter().enumerate() {
                 (x[i], y[i], z[i]) = (q.x.to_f64(), q.y.to_f64(), q.z.to_f64());
+                extent[0] = extent[0].max(x[i].abs());
+                extent[1] = extent[1].max(y[i].abs());
+                extent[2] = extent[2].max(z[i].abs());
+            }
+            for t in &mut terms {
+                let [kx, ky, kz] = t.k;
+                let bound = kx.abs() * extent[0] + ky.abs() * extent[1] + kz.abs() * extent[2];
+                t.in_range = cosine::in_range(bound + t.offset.abs());
             }
             let sum = &mut sum[..n];
             sum.fill(0.0);
