@@ -300,19 +300,22 @@ impl<T: Real> Mesh<T> {
         let count = heights.len();
         let (mut points, mut evaluated) = (Vec::with_capacity(count), Vec::with_capacity(count));
         // The heights above the layer's middle are taken as the walk takes them, `n·x + h_c'`.
-        let layer = layer.map(|l| (l.reach, frame.height - l.mid));
+        let layer = layer.map(|l| (l.reach + self.longest_edge, l.reach, frame.height - l.mid));
+        // The vertex `v` (mesh frame) projected onto the still plane, world frame:
+        // `c + R·v − n·(n_l·v + h_c) = (R − n·n_lᵀ)·v + (c − n·h_c)`.
+        let onto_plane = frame.rotation - frame.normal * n.transpose();
+        let origin = frame.center_of_mass - frame.normal * frame.height;
         for (j, (h, v)) in heights.iter_mut().zip(vertices).enumerate() {
             let local = n.dot(v);
-            let still = local + frame.height;
-            *h = still;
-            if let Some((reach, layer_height)) = layer {
+            *h = local + frame.height;
+            if let Some((dry_above, reach, layer_height)) = layer {
                 let above_middle = local + layer_height;
-                if above_middle > reach + self.longest_edge {
+                if above_middle > dry_above {
                     *h = above_middle - reach;
                     continue;
                 }
             }
-            points.push(frame.center_of_mass + frame.rotation * v - frame.normal * still);
+            points.push(origin + onto_plane * v);
             evaluated.push(j as u32);
         }
         let mut elevations = alloc::vec![T::zero(); points.len()];
