@@ -203,6 +203,34 @@ def test_bodies_of_several_parts_and_per_body_settings() -> None:
     assert f2[2, 1] == pytest.approx(WEIGHT, rel=1e-6)
 
 
+def test_a_mesh_equal_to_one_held_is_replaced_by_it() -> None:
+    """A Mesh built apart but equal to one a body is made of (same vertices and faces) is
+    replaced by that one, so that the controller keeps one object of equal meshes; within one
+    call too; a different mesh is kept as given; and the forces are those of the mesh held."""
+    held = buoyancy.shapes.cube()
+    equal = [buoyancy.Mesh(held.vertices, held.faces) for _ in range(3)]
+    other = buoyancy.shapes.cube(2)
+    assert all(m == held and m is not held for m in equal) and other != held
+    controller = buoyancy.Controller()
+    controller.add(held)
+    controller.add([equal[0], (other, (0.0, 2.0, 0.0), IDENTITY)])
+    kept = [p[0] for p in controller.parts(1)]
+    assert kept[0] is held and kept[1] is other
+    controller.replace(0, equal[1])
+    assert controller.parts(0)[0][0] is held
+    alone = buoyancy.Controller()
+    alone.add([equal[1], equal[2]])
+    assert [p[0] for p in alone.parts(0)] == [equal[1], equal[1]]
+    assert alone.parts(0)[1][0] is equal[1]
+    reference = buoyancy.Controller()
+    reference.add(held)
+    reference.add([held, (other, (0.0, 2.0, 0.0), IDENTITY)])
+    moving = {"linear_velocities": np.tile([0.1, -0.3, 0.2], (2, 1))}
+    np.testing.assert_array_equal(
+        controller.step(1 / 60, **states(2, **moving))[0], reference.step(1 / 60, **states(2, **moving))[0]
+    )
+
+
 def test_settings() -> None:
     controller = buoyancy.Controller(buoyancy.Water(level=1.0), "ExactSurface", buoyancy.DampingCoefficients.off())
     assert controller.water == buoyancy.Water(level=1.0)

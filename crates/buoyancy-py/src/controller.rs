@@ -303,25 +303,35 @@ fn given_parts(parts: &Bound<'_, PyAny>) -> PyResult<Vec<GivenPart>> {
         .collect()
 }
 
-/// The core's parts of the given parts. Their meshes are shared, not copied: a mesh equal to
-/// one a body of the controller (`bodies`) is made of already (the same object, or the same
-/// vertices and faces) takes that body's core mesh, so that its reduced copy is found and not
-/// built again.
-fn core_parts(py: Python<'_>, parts: &[GivenPart], bodies: &[Vec<GivenPart>]) -> Vec<Part> {
+/// The core's parts of the given parts, whose meshes are shared, not copied: a mesh equal to
+/// one that a body of the controller (`bodies`) or an earlier part is made of already (the same
+/// object, or the same vertices and faces) is replaced in `parts` by that object and takes its
+/// core mesh. Its reduced copy is then found, not built again, and the equal object given is
+/// not kept alive by the controller.
+fn core_parts(py: Python<'_>, parts: &mut [GivenPart], bodies: &[Vec<GivenPart>]) -> Vec<Part> {
+    for k in 0..parts.len() {
+        let (earlier, rest) = parts.split_at_mut(k);
+        let part = &mut rest[0];
+        let mesh = part.mesh.bind(py).get();
+        let hash = mesh.content_hash();
+        let held = bodies
+            .iter()
+            .flatten()
+            .chain(earlier.iter())
+            .find(|q| {
+                let q = q.mesh.bind(py).get();
+                std::ptr::eq(q, mesh) || (q.content_hash() == hash && q == mesh)
+            })
+            .map(|q| q.mesh.clone_ref(py));
+        if let Some(held) = held {
+            part.mesh = held;
+        }
+    }
     parts
         .iter()
-        .map(|p| {
-            let mesh = p.mesh.bind(py).get();
-            let hash = mesh.content_hash();
-            let held = bodies
-                .iter()
-                .flatten()
-                .map(|q| q.mesh.bind(py).get())
-                .find(|q| std::ptr::eq(*q, mesh) || (q.content_hash() == hash && *q == mesh));
-            Part {
-                mesh: held.unwrap_or(mesh).shared(),
-                shape_to_body: Pose::from_parts(Translation3::from(p.position), p.rotation),
-            }
+        .map(|p| Part {
+            mesh: p.mesh.bind(py).get().shared(),
+            shape_to_body: Pose::from_parts(Translation3::from(p.position), p.rotation),
         })
         .collect()
 }
@@ -676,6 +686,8 @@ impl PyController {
     ///     matrix). The body's frame is the one of the ``positions`` and ``quaternions`` given
     ///     to :meth:`step`. A ``Mesh`` is shared, not copied: the bodies made of the same
     ///     ``Mesh`` share it, and the reduced copy its damping is integrated over, built once.
+    ///     A ``Mesh`` equal to one a body is made of already (same vertices and faces) is
+    ///     replaced by that one, so that equal meshes built apart are not all kept.
     /// method : str, optional
     ///     This body's method; default the controller's.
     /// water : Water, optional
@@ -711,11 +723,11 @@ impl PyController {
         damping: Option<&Bound<'_, PyAny>>,
         damping_resolution: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<usize> {
-        let given = given_parts(parts)?;
+        let mut given = given_parts(parts)?;
         let options = body_options(method, water, damping, damping_resolution)?;
         let index = self
             .inner
-            .add(core_parts(py, &given, &self.parts), options)
+            .add(core_parts(py, &mut given, &self.parts), options)
             .map_err(|e| to_py(e, Some("parts")))?;
         self.parts.push(given);
         Ok(index)
@@ -739,10 +751,10 @@ impl PyController {
         damping_resolution: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<()> {
         let i = self.body(index)?;
-        let given = given_parts(parts)?;
+        let mut given = given_parts(parts)?;
         let options = body_options(method, water, damping, damping_resolution)?;
         self.inner
-            .replace(i, core_parts(py, &given, &self.parts), options)
+            .replace(i, core_parts(py, &mut given, &self.parts), options)
             .map_err(|e| to_py(e, Some("parts")))?;
         self.parts[i] = given;
         Ok(())
@@ -871,8 +883,9 @@ impl PyController {
     }
 
     /// The parts of body ``index``: a list of ``(mesh, position, quaternion)``, each mesh the
-    /// object given to :meth:`add` and its pose in the body's frame (arrays of shape (3,) and
-    /// (4,), the quaternion ``(x, y, z, w)``). ``IndexError`` if there is no such body.
+    /// object given to :meth:`add` (or the equal one the controller held already) and its pose
+    /// in the body's frame (arrays of shape (3,) and (4,), the quaternion ``(x, y, z, w)``).
+    /// ``IndexError`` if there is no such body.
     #[allow(clippy::type_complexity)]
     fn parts<'py>(
         &self,
