@@ -113,24 +113,27 @@ pub(crate) const BLOCK: usize = 1024;
 /// of the phases (tested).
 pub(crate) fn add_cosines(sum: &mut [f64], x: &[f64], y: &[f64], z: &[f64], terms: &[CosineTerm]) {
     #[cfg(all(feature = "std", target_arch = "x86_64"))]
-    if std::is_x86_feature_detected!("avx512f") && std::is_x86_feature_detected!("fma") {
-        // SAFETY: `add_cosines_avx512` needs AVX-512F and FMA, and this CPU has both (checked
-        // just above); it is otherwise the safe `add_cosines_with`.
-        #[allow(unsafe_code)]
-        unsafe {
-            add_cosines_avx512(sum, x, y, z, terms)
+    {
+        type Path = unsafe fn(&mut [f64], &[f64], &[f64], &[f64], &[CosineTerm]);
+        let (avx512f, avx2, fma) = (
+            std::is_x86_feature_detected!("avx512f"),
+            std::is_x86_feature_detected!("avx2"),
+            std::is_x86_feature_detected!("fma"),
+        );
+        let fused: Option<Path> = match (avx512f, avx2, fma) {
+            (true, true, true) => Some(add_cosines_avx512),
+            (_, true, true) => Some(add_cosines_avx2_fma),
+            _ => None,
         };
-        return;
-    }
-    #[cfg(all(feature = "std", target_arch = "x86_64"))]
-    if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
-        // SAFETY: `add_cosines_avx2_fma` needs AVX2 and FMA, and this CPU has both (checked
-        // just above); it is otherwise the safe `add_cosines_with`.
-        #[allow(unsafe_code)]
-        unsafe {
-            add_cosines_avx2_fma(sum, x, y, z, terms)
-        };
-        return;
+        if let Some(path) = fused {
+            // SAFETY: each path needs the CPU features it was compiled for, and this CPU has
+            // them (checked just above); it is otherwise the safe `add_cosines_with`.
+            #[allow(unsafe_code)]
+            unsafe {
+                path(sum, x, y, z, terms)
+            };
+            return;
+        }
     }
     add_cosines_with::<false>(sum, x, y, z, terms);
 }
@@ -302,17 +305,16 @@ mod tests {
         }
     }
 
-    /// The passes of four terms add each point's terms in their order, one at a time: the
-    /// sums equal those of the terms taken one by one, bit for bit, on both paths.
-    #[test]
-    fn four_terms_to_a_pass_change_no_bit() {
-        let n = BLOCK + 13;
+    /// `n` points spread over ±40 m on each axis.
+    fn spread_points(n: usize) -> [alloc::vec::Vec<f64>; 3] {
         let point = |i: usize, k: f64| ((i as f64 + 0.5) * k).sin() * 40.0;
-        let x: alloc::vec::Vec<f64> = (0..n).map(|i| point(i, 0.37)).collect();
-        let y: alloc::vec::Vec<f64> = (0..n).map(|i| point(i, 0.11)).collect();
-        let z: alloc::vec::Vec<f64> = (0..n).map(|i| point(i, 0.73)).collect();
-        // 11 terms: two passes of four (the second with one out of range) and three alone.
-        let terms: alloc::vec::Vec<CosineTerm> = (0..11)
+        [0.37, 0.11, 0.73].map(|k| (0..n).map(|i| point(i, k)).collect())
+    }
+
+    /// 11 terms, the seventh out of range: two passes of four (the second with the one out of
+    /// range) and three alone.
+    fn eleven_terms() -> alloc::vec::Vec<CosineTerm> {
+        (0..11)
             .map(|i| {
                 let a = i as f64;
                 CosineTerm {
@@ -322,7 +324,16 @@ mod tests {
                     in_range: i != 6,
                 }
             })
-            .collect();
+            .collect()
+    }
+
+    /// The passes of four terms add each point's terms in their order, one at a time: the
+    /// sums equal those of the terms taken one by one, bit for bit, on both paths.
+    #[test]
+    fn four_terms_to_a_pass_change_no_bit() {
+        let n = BLOCK + 13;
+        let [x, y, z] = spread_points(n);
+        let terms = eleven_terms();
         type AddTerm = fn(&mut [f64], &[f64], &[f64], &[f64], &CosineTerm);
         let one_by_one = |add: AddTerm| {
             let mut sum = alloc::vec![0.25; n];
@@ -356,21 +367,8 @@ mod tests {
         }
         // 2·BLOCK + 11 points: full vectors of eight, a tail of three, across two blocks.
         let n = 2 * BLOCK + 11;
-        let point = |i: usize, k: f64| ((i as f64 + 0.5) * k).sin() * 60.0;
-        let x: alloc::vec::Vec<f64> = (0..n).map(|i| point(i, 0.29)).collect();
-        let y: alloc::vec::Vec<f64> = (0..n).map(|i| point(i, 0.13)).collect();
-        let z: alloc::vec::Vec<f64> = (0..n).map(|i| point(i, 0.71)).collect();
-        let terms: alloc::vec::Vec<CosineTerm> = (0..9)
-            .map(|i| {
-                let a = i as f64;
-                CosineTerm {
-                    k: [(0.4 * a).cos() * 3.0, 0.02 * a, (0.4 * a).sin() * 3.0],
-                    offset: if i == 5 { 1e7 } else { 1.3 * a - 30.0 },
-                    amplitude: 0.02 + 0.1 * a,
-                    in_range: i != 5,
-                }
-            })
-            .collect();
+        let [x, y, z] = spread_points(n);
+        let terms = eleven_terms();
         let (mut eight, mut four) = (alloc::vec![0.5; n], alloc::vec![0.5; n]);
         // SAFETY: this CPU has AVX-512F, AVX2 and FMA (checked above).
         #[allow(unsafe_code)]
