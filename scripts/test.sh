@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every test of the project: unit, integration, property and doc tests of all crates,
 # with and without the optional features; then builds the Python wheel into a fresh virtual
-# environment (.venv-test/) with `pip install .` (and rapier3d, for buoyancy.rapier) and runs
+# environment (.venv-test/) with `pip install .` (and rapier3d and mujoco, for buoyancy.rapier and
+# buoyancy.mujoco) and runs
 # its pytest suite (tests/python), checks the stubs against the compiled module (mypy's stubtest)
 # and lints the Python code (ruff).
 set -euo pipefail
@@ -30,6 +31,10 @@ VPY=.venv-test/bin/python
 # tests skip, saying so.
 "$VPY" -m pip install --quiet 'rapier3d>=0.36.1' \
   || echo "note: rapier3d could not be installed; tests/python/test_rapier.py will skip"
+# MuJoCo and Gymnasium, for buoyancy.mujoco and examples/mujoco_wave_energy.py (their tests
+# skip without them, saying so, and fail under CI=true).
+"$VPY" -m pip install --quiet 'mujoco>=3.3' 'gymnasium>=1.0' \
+  || echo "note: mujoco could not be installed; tests/python/test_mujoco.py will skip"
 "$VPY" -m pip install --quiet .
 # From the tests folder's parent, so that `import buoyancy` is the installed wheel.
 "$VPY" -m pytest tests/python -q -p no:cacheprovider

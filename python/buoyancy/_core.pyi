@@ -59,7 +59,11 @@ __all__ = [
     "Waves",
     "_rapier_bodies",
     "_world_inverse_inertias",
+    "capsule",
     "cube",
+    "cuboid",
+    "cylinder",
+    "ellipsoid",
     "load",
     "torus",
     "torus_knot",
@@ -940,6 +944,18 @@ def wigley_hull(
     waterlines: int = 17,
 ) -> Mesh:
     """A closed Wigley hull floating upright at its design draft (y up, waterline at y = 0)."""
+
+def cuboid(half_extents: npt.ArrayLike) -> Mesh:
+    """A box of half extents (a, b, c), m, about the origin: volume 8·a·b·c."""
+
+def ellipsoid(radii: npt.ArrayLike, slices: int = 32, stacks: int = 16) -> Mesh:
+    """An ellipsoid of semi-axes (a, b, c), m, holding exactly 4π·a·b·c/3."""
+
+def cylinder(radius: float, half_height: float, segments: int = 32) -> Mesh:
+    """A cylinder about y holding exactly 2π·radius²·half_height, m³."""
+
+def capsule(radius: float, half_height: float, segments: int = 32, stacks: int = 16) -> Mesh:
+    """A capsule about y holding exactly π·radius²·(2·half_height + 4·radius/3), m³."""
 
 def _rapier_bodies(
     blobs: list[bytes], header: bytes

@@ -88,7 +88,6 @@ Frames and units
 
 from __future__ import annotations
 
-import math
 from collections.abc import Hashable, Sequence
 from typing import Any
 
@@ -105,6 +104,7 @@ from ._core import (
     _rapier_bodies,
     _world_inverse_inertias,
 )
+from ._glue import water_for_gravity
 
 try:
     import rapier3d
@@ -223,27 +223,6 @@ def _parse_bodies(blobs: list[bytes]) -> _State | None:
     return record, scalars, keys
 
 
-def _water_for_gravity(gravity: npt.ArrayLike) -> Water:
-    """Fresh water whose surface passes through the origin, up opposite to gravity (y up when
-    gravity is zero), with ``g = |gravity|``. A gravity that is not 3 finite numbers is a
-    ``ValueError`` naming it."""
-    try:
-        g = np.asarray(gravity, dtype=np.float64)
-    except (TypeError, ValueError) as error:
-        raise ValueError(f"gravity: expected 3 numbers, the gravity vector in m/s² ({error})") from None
-    if g.shape != (3,):
-        raise ValueError(f"gravity: expected 3 numbers, the gravity vector in m/s², got shape {g.shape}")
-    if not np.isfinite(g).all():
-        raise ValueError(f"gravity: has a NaN or infinite component: {tuple(g.tolist())}")
-    with np.errstate(over="ignore"):
-        norm = float(np.linalg.norm(g))
-    if not math.isfinite(norm):
-        raise ValueError(f"gravity: too large, its magnitude overflows: {tuple(g.tolist())}")
-    if norm == 0.0:
-        return Water(gravity=0.0)
-    return Water(gravity=norm, normal=tuple(-g / norm))
-
-
 def _local_mass_properties(rb: Any) -> tuple[float, np.ndarray]:
     """A body's inverse mass (1/kg) and inverse inertia tensor in its own frame (3, 3),
     1/(kg·m²), as rapier computes them (zero for a zero mass or principal inertia)."""
@@ -360,7 +339,7 @@ class FloatingBodies:
         damping: DampingCoefficients | None = None,
         damping_resolution: int | str = 384,
     ) -> None:
-        world_water = _water_for_gravity(gravity)  # checks the gravity even when `water` is given
+        world_water = water_for_gravity(gravity)  # checks the gravity even when `water` is given
         self._controller = Controller(
             world_water if water is None else water, method, damping, damping_resolution=damping_resolution
         )

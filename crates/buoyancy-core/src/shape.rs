@@ -1,4 +1,7 @@
-//! Procedural closed meshes: cube, UV sphere, torus, torus knot and Wigley hull.
+//! Procedural closed meshes: cube, UV sphere, torus, torus knot and Wigley hull; and the
+//! primitives of physics engines, each holding exactly the volume of the solid it stands for
+//! (cuboid, ellipsoid, cylinder, capsule), so that a body's mass from its density and the water
+//! it displaces agree.
 //!
 //! Each function returns `(vertices, triangles)` ready for [`Mesh::new`](crate::Mesh::new):
 //! closed 2-manifolds wound counter-clockwise seen from outside, with shared (welded) vertices;
@@ -422,6 +425,214 @@ pub fn wigley_hull<T: Real>(
     finish(vertices, triangles)
 }
 
+/// A box of `half_extents` `[a, b, c]` about the origin, its edges along the axes: 12 triangles
+/// on the 8 corners, volume `8·a·b·c` exactly.
+///
+/// # Errors
+/// [`Error::InvalidShape`] if a half extent is not finite and positive.
+pub fn cuboid<T: Real>(half_extents: [f64; 3]) -> Result<Shape<T>, Error> {
+    for h in half_extents {
+        positive(h, "half_extents")?;
+    }
+    let (vertices, triangles) = cube::<f64>(1)?;
+    let scale = half_extents.map(|h| 2.0 * h);
+    finish(
+        vertices
+            .into_iter()
+            .map(|p| Point3::new(p.x * scale[0], p.y * scale[1], p.z * scale[2]))
+            .collect(),
+        triangles,
+    )
+}
+
+/// An ellipsoid of semi-axes `radii` `[a, b, c]` along x, y and z about the origin, as
+/// [`uv_sphere`] (`slices` around the y axis, `stacks` from pole to pole) scaled by `radii` and
+/// then uniformly by the factor `(4π/3 / V₁)^(1/3)` (`V₁` the unit polyhedron's volume, just
+/// under `4π/3`), so that it holds the ellipsoid's volume `4π·a·b·c/3` exactly (to rounding); its
+/// vertices lie just outside the ellipsoid (`32, 16`: by a factor 1.0054).
+///
+/// # Errors
+/// [`Error::InvalidShape`] if a radius is not finite and positive, `slices < 3`, `stacks < 2`,
+/// or there are too many vertices for `u32` indices.
+pub fn ellipsoid<T: Real>(
+    radii: [f64; 3],
+    slices: usize,
+    stacks: usize,
+) -> Result<Shape<T>, Error> {
+    for r in radii {
+        positive(r, "radii")?;
+    }
+    let (unit, triangles) = uv_sphere::<f64>(1.0, slices, stacks)?;
+    let factor = libm::cbrt(4.0 / 3.0 * core::f64::consts::PI / volume(&unit, &triangles));
+    finish(
+        unit.into_iter()
+            .map(|p| {
+                Point3::new(
+                    p.x * radii[0] * factor,
+                    p.y * radii[1] * factor,
+                    p.z * radii[2] * factor,
+                )
+            })
+            .collect(),
+        triangles,
+    )
+}
+
+/// A cylinder of `radius` about the y axis from `y = −half_height` to `y = half_height`: a prism
+/// on a regular `segments`-gon, its caps fanned from their centers (`4·segments` triangles). The
+/// polygon's circumradius is `radius·√(2π / (n·sin(2π/n)))`, so that its area is `π·radius²`
+/// and the prism holds the cylinder's volume `2π·radius²·half_height` exactly (to rounding).
+///
+/// # Errors
+/// [`Error::InvalidShape`] if a length is not finite and positive, `segments < 3`, or there are
+/// too many vertices for `u32` indices.
+pub fn cylinder<T: Real>(
+    radius: f64,
+    half_height: f64,
+    segments: usize,
+) -> Result<Shape<T>, Error> {
+    positive(radius, "radius")?;
+    positive(half_height, "half_height")?;
+    at_least(segments, 3, "segments", "must be at least 3")?;
+    let n = segments as f64;
+    let rim = radius * libm::sqrt(TAU / (n * libm::sin(TAU / n)));
+    finish_lathe(
+        &[
+            (0.0, half_height),
+            (rim, half_height),
+            (rim, -half_height),
+            (0.0, -half_height),
+        ],
+        segments,
+    )
+}
+
+/// A capsule about the y axis: the cylinder of `radius` from `y = −half_height` to
+/// `y = half_height` capped by two half spheres, `segments` around the axis and `stacks` (even)
+/// latitude bands from pole to pole over both caps (`2·segments·stacks` triangles).
+/// Every ring's radius, and the caps' height above and below the cylinder, are scaled by the
+/// factor `s` (just over 1) that solves `s²·A + s³·B = π·radius²·(2·half_height + 4·radius/3)`,
+/// `A` the inscribed prism's volume and `B` that of the two inscribed caps: the mesh holds the
+/// capsule's volume exactly (to rounding).
+///
+/// # Errors
+/// [`Error::InvalidShape`] if a length is not finite and positive, `segments < 3`, `stacks` is
+/// odd or less than 2, or there are too many vertices for `u32` indices.
+pub fn capsule<T: Real>(
+    radius: f64,
+    half_height: f64,
+    segments: usize,
+    stacks: usize,
+) -> Result<Shape<T>, Error> {
+    positive(radius, "radius")?;
+    positive(half_height, "half_height")?;
+    at_least(segments, 3, "segments", "must be at least 3")?;
+    at_least(stacks, 2, "stacks", "must be at least 2")?;
+    if !stacks.is_multiple_of(2) {
+        return Err(Error::InvalidShape {
+            parameter: "stacks",
+            reason: "must be even (a ring at each end of the cylinder)",
+        });
+    }
+    let profile = |scale: f64, half_height: f64| {
+        let mut profile = Vec::with_capacity(stacks + 2);
+        for i in 0..=stacks {
+            let polar = core::f64::consts::PI * i as f64 / stacks as f64;
+            let (sin, cos) = (libm::sin(polar), libm::cos(polar));
+            let r = if i == 0 || i == stacks {
+                0.0
+            } else {
+                scale * radius * sin
+            };
+            // Upper cap from the pole to the equator, then the lower cap from its equator on.
+            if 2 * i <= stacks {
+                profile.push((r, half_height + scale * radius * cos));
+            }
+            if 2 * i >= stacks {
+                profile.push((r, -half_height + scale * radius * cos));
+            }
+        }
+        profile
+    };
+    // A: the prism between the two rims, exact for the polygon; B: the two caps, closed on
+    // each other (half height 0, one shared equator counted once).
+    let n = segments as f64;
+    let prism = n / 2.0 * libm::sin(TAU / n) * radius * radius * 2.0 * half_height;
+    let (caps, caps_triangles) = lathe(&profile(1.0, 0.0)[..], segments)?;
+    let caps = volume(&caps, &caps_triangles);
+    let target = core::f64::consts::PI * radius * radius * (2.0 * half_height + 4.0 * radius / 3.0);
+    let mut scale = 1.0;
+    for _ in 0..8 {
+        let f = scale * scale * (prism + scale * caps) - target;
+        scale -= f / (scale * (2.0 * prism + 3.0 * scale * caps));
+    }
+    let mut full = profile(scale, half_height);
+    // The equator ring is pushed by both caps: once on each end of the cylinder.
+    full.dedup_by(|a, b| a == b);
+    finish_lathe(&full, segments)
+}
+
+/// The signed volume `Σ (a · (b × c)) / 6` of a closed mesh (positive when wound outward).
+fn volume(vertices: &[Point3<f64>], triangles: &[[u32; 3]]) -> f64 {
+    triangles
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|i| vertices[i as usize].coords);
+            a.dot(&b.cross(&c))
+        })
+        .sum::<f64>()
+        / 6.0
+}
+
+fn finish_lathe<T: Real>(profile: &[(f64, f64)], segments: usize) -> Result<Shape<T>, Error> {
+    let (vertices, triangles) = lathe(profile, segments)?;
+    finish(vertices, triangles)
+}
+
+/// The surface of revolution about the y axis of a `profile` of `(radius, y)` from the top pole
+/// (radius 0) down to the bottom pole (radius 0), `segments` around the axis; the rings as
+/// [`uv_sphere`] places them.
+fn lathe(profile: &[(f64, f64)], segments: usize) -> Result<Shape<f64>, Error> {
+    let rings = profile.len() - 2;
+    indexable(
+        segments.checked_mul(rings).and_then(|v| v.checked_add(2)),
+        "segments",
+    )?;
+    let mut vertices = Vec::with_capacity(2 + segments * rings);
+    vertices.push(Point3::new(0.0, profile[0].1, 0.0));
+    for &(r, y) in &profile[1..=rings] {
+        for j in 0..segments {
+            let azimuth = TAU * j as f64 / segments as f64;
+            vertices.push(Point3::new(
+                r * libm::cos(azimuth),
+                y,
+                -r * libm::sin(azimuth),
+            ));
+        }
+    }
+    let south = vertices.len() as u32;
+    vertices.push(Point3::new(0.0, profile[rings + 1].1, 0.0));
+    let ring = |i: usize, j: usize| (1 + (i - 1) * segments + j % segments) as u32;
+    let mut triangles = Vec::with_capacity(2 * segments * rings);
+    for j in 0..segments {
+        triangles.push([0, ring(1, j), ring(1, j + 1)]);
+        triangles.push([south, ring(rings, j + 1), ring(rings, j)]);
+    }
+    for i in 1..rings {
+        for j in 0..segments {
+            let (a, b, c, d) = (
+                ring(i, j),
+                ring(i + 1, j),
+                ring(i + 1, j + 1),
+                ring(i, j + 1),
+            );
+            triangles.push([a, b, c]);
+            triangles.push([a, c, d]);
+        }
+    }
+    Ok((vertices, triangles))
+}
+
 /// Sweeps a circle of radius `r` along a closed curve `u ∈ [0, 2π) ↦ (point, tangent)`, with a
 /// frame transported by projection so that the tube does not twist over one turn.
 fn tube<T: Real>(
@@ -596,5 +807,49 @@ mod tests {
             "{} vs {expected}",
             m.volume()
         );
+    }
+
+    #[test]
+    fn primitives_hold_their_solids_volume() {
+        let check = |shape: Result<Shape<f64>, Error>, exact: f64, triangles: usize| {
+            let (v, t) = shape.unwrap();
+            assert_eq!(t.len(), triangles);
+            let m = Mesh::new(v, t).unwrap();
+            assert!(!m.was_reoriented());
+            assert!(
+                (m.volume() / exact - 1.0).abs() < 1e-12,
+                "{} vs {exact}",
+                m.volume()
+            );
+            assert!(m.centroid().coords.norm() < 1e-12);
+        };
+        check(cuboid([0.5, 0.25, 2.0]), 8.0 * 0.5 * 0.25 * 2.0, 12);
+        for (slices, stacks) in [(3, 2), (8, 5), (32, 16)] {
+            check(
+                ellipsoid([1.0, 0.5, 2.0], slices, stacks),
+                4.0 / 3.0 * PI * 1.0,
+                2 * slices * (stacks - 1),
+            );
+        }
+        for segments in [3, 7, 32] {
+            check(cylinder(0.3, 1.5, segments), PI * 0.09 * 3.0, 4 * segments);
+        }
+        for (segments, stacks) in [(3, 2), (12, 4), (32, 16)] {
+            check(
+                capsule(0.3, 0.5, segments, stacks),
+                PI * 0.09 * (1.0 + 0.4),
+                2 * segments * stacks,
+            );
+        }
+        let shape = |e: Result<Shape<f64>, Error>| match e {
+            Err(Error::InvalidShape { parameter, .. }) => parameter,
+            other => panic!("{:?}", other.map(|(v, t)| (v.len(), t.len()))),
+        };
+        assert_eq!(shape(cuboid([1.0, 0.0, 1.0])), "half_extents");
+        assert_eq!(shape(ellipsoid([1.0, 1.0, f64::NAN], 8, 8)), "radii");
+        assert_eq!(shape(cylinder(1.0, -1.0, 8)), "half_height");
+        assert_eq!(shape(cylinder(1.0, 1.0, 2)), "segments");
+        assert_eq!(shape(capsule(1.0, 1.0, 8, 3)), "stacks");
+        assert_eq!(shape(capsule(0.0, 1.0, 8, 4)), "radius");
     }
 }

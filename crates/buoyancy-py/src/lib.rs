@@ -70,6 +70,10 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(shapes::torus, m)?)?;
     m.add_function(wrap_pyfunction!(shapes::torus_knot, m)?)?;
     m.add_function(wrap_pyfunction!(shapes::wigley_hull, m)?)?;
+    m.add_function(wrap_pyfunction!(shapes::cuboid, m)?)?;
+    m.add_function(wrap_pyfunction!(shapes::ellipsoid, m)?)?;
+    m.add_function(wrap_pyfunction!(shapes::cylinder, m)?)?;
+    m.add_function(wrap_pyfunction!(shapes::capsule, m)?)?;
     m.add_function(wrap_pyfunction!(rapier_bodies::rapier_bodies, m)?)?;
     m.add_function(wrap_pyfunction!(rapier_bodies::world_inverse_inertias, m)?)?;
     m.add("METHODS", PyTuple::new(py, Method::ALL.map(Method::name))?)?;

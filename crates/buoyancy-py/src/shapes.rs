@@ -3,7 +3,7 @@
 
 use pyo3::prelude::*;
 
-use crate::convert::{count_or, real_or};
+use crate::convert::{count_or, real, real_or, vector3};
 use crate::errors::to_py;
 use crate::mesh::PyMesh;
 
@@ -156,6 +156,124 @@ pub fn wigley_hull(
     PyMesh::build(
         py,
         buoyancy_core::shape::wigley_hull(length, beam, draft, freeboard, stations, waterlines)
+            .map_err(|e| to_py(e, None))?,
+    )
+}
+
+/// Three lengths (m), each finite and positive, from a sequence of three numbers.
+fn lengths3(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<[f64; 3]> {
+    let v = vector3(obj, name)?;
+    if v.iter().all(|x| x.is_finite() && *x > 0.0) {
+        Ok([v.x, v.y, v.z])
+    } else {
+        Err(crate::errors::arg_error(
+            name,
+            format!(
+                "must be three finite positive lengths, got {:?}",
+                [v.x, v.y, v.z]
+            ),
+        ))
+    }
+}
+
+/// A box of ``half_extents`` (a, b, c) (m) about the origin, edges along the axes: 12 triangles,
+/// volume ``8·a·b·c`` exactly.
+///
+/// >>> buoyancy.shapes.cuboid((1.0, 0.5, 0.25)).volume
+/// 1.0
+#[pyfunction]
+#[pyo3(text_signature = "(half_extents)")]
+pub fn cuboid(py: Python<'_>, half_extents: &Bound<'_, PyAny>) -> PyResult<PyMesh> {
+    let half_extents = lengths3(half_extents, "half_extents")?;
+    PyMesh::build(
+        py,
+        buoyancy_core::shape::cuboid(half_extents).map_err(|e| to_py(e, None))?,
+    )
+}
+
+/// An ellipsoid of semi-axes ``radii`` (a, b, c) (m) along x, y, z about the origin: a UV
+/// sphere (``slices`` around y, ``stacks`` from pole to pole) scaled by the radii and then
+/// uniformly, just enough that it holds the ellipsoid's volume ``4π·a·b·c/3`` exactly.
+///
+/// >>> import math
+/// >>> round(buoyancy.shapes.ellipsoid((1.0, 0.5, 0.5)).volume / (math.pi / 3), 12)
+/// 1.0
+#[pyfunction]
+#[pyo3(
+    signature = (radii, slices=None, stacks=None),
+    text_signature = "(radii, slices=32, stacks=16)"
+)]
+pub fn ellipsoid(
+    py: Python<'_>,
+    radii: &Bound<'_, PyAny>,
+    slices: Option<&Bound<'_, PyAny>>,
+    stacks: Option<&Bound<'_, PyAny>>,
+) -> PyResult<PyMesh> {
+    let radii = lengths3(radii, "radii")?;
+    let slices = count_or(slices, "slices", 32)?;
+    let stacks = count_or(stacks, "stacks", 16)?;
+    PyMesh::build(
+        py,
+        buoyancy_core::shape::ellipsoid(radii, slices, stacks).map_err(|e| to_py(e, None))?,
+    )
+}
+
+/// A cylinder of ``radius`` (m) about the y axis from ``y = −half_height`` to ``half_height``:
+/// a prism on a regular ``segments``-gon whose area is ``π·radius²``, so that it holds the
+/// cylinder's volume ``2π·radius²·half_height`` exactly (4·segments triangles).
+///
+/// >>> import math
+/// >>> round(buoyancy.shapes.cylinder(0.5, 1.0).volume / (math.pi / 2), 12)
+/// 1.0
+#[pyfunction]
+#[pyo3(
+    signature = (radius, half_height, segments=None),
+    text_signature = "(radius, half_height, segments=32)"
+)]
+pub fn cylinder(
+    py: Python<'_>,
+    radius: &Bound<'_, PyAny>,
+    half_height: &Bound<'_, PyAny>,
+    segments: Option<&Bound<'_, PyAny>>,
+) -> PyResult<PyMesh> {
+    let radius = real(radius, "radius")?;
+    let half_height = real(half_height, "half_height")?;
+    let segments = count_or(segments, "segments", 32)?;
+    PyMesh::build(
+        py,
+        buoyancy_core::shape::cylinder(radius, half_height, segments)
+            .map_err(|e| to_py(e, None))?,
+    )
+}
+
+/// A capsule about the y axis: the cylinder of ``radius`` (m) from ``y = −half_height`` to
+/// ``half_height`` capped by half spheres; ``segments`` around the axis, ``stacks`` (even)
+/// latitude bands from pole to pole over both caps (2·segments·stacks triangles). Its rings are
+/// scaled just enough that it holds the capsule's volume ``π·r²·(2·half_height + 4r/3)``
+/// exactly.
+///
+/// >>> import math
+/// >>> round(buoyancy.shapes.capsule(0.5, 1.0).volume / (math.pi * 0.25 * (2 + 2 / 3)), 12)
+/// 1.0
+#[pyfunction]
+#[pyo3(
+    signature = (radius, half_height, segments=None, stacks=None),
+    text_signature = "(radius, half_height, segments=32, stacks=16)"
+)]
+pub fn capsule(
+    py: Python<'_>,
+    radius: &Bound<'_, PyAny>,
+    half_height: &Bound<'_, PyAny>,
+    segments: Option<&Bound<'_, PyAny>>,
+    stacks: Option<&Bound<'_, PyAny>>,
+) -> PyResult<PyMesh> {
+    let radius = real(radius, "radius")?;
+    let half_height = real(half_height, "half_height")?;
+    let segments = count_or(segments, "segments", 32)?;
+    let stacks = count_or(stacks, "stacks", 16)?;
+    PyMesh::build(
+        py,
+        buoyancy_core::shape::capsule(radius, half_height, segments, stacks)
             .map_err(|e| to_py(e, None))?,
     )
 }

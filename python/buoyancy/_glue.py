@@ -1,0 +1,34 @@
+"""What the engine adapters (:mod:`buoyancy.rapier`, :mod:`buoyancy.mujoco`) share: the water
+an engine's gravity implies."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import numpy.typing as npt
+
+from ._core import Water
+
+
+def water_for_gravity(
+    gravity: npt.ArrayLike, up_without_gravity: tuple[float, float, float] = (0.0, 1.0, 0.0)
+) -> Water:
+    """Fresh water whose surface passes through the origin, up opposite to gravity
+    (``up_without_gravity`` when gravity is zero), with ``g = |gravity|``. A gravity that is not
+    3 finite numbers is a ``ValueError`` naming it."""
+    try:
+        g = np.asarray(gravity, dtype=np.float64)
+    except (TypeError, ValueError) as error:
+        raise ValueError(f"gravity: expected 3 numbers, the gravity vector in m/s² ({error})") from None
+    if g.shape != (3,):
+        raise ValueError(f"gravity: expected 3 numbers, the gravity vector in m/s², got shape {g.shape}")
+    if not np.isfinite(g).all():
+        raise ValueError(f"gravity: has a NaN or infinite component: {tuple(g.tolist())}")
+    with np.errstate(over="ignore"):
+        norm = float(np.linalg.norm(g))
+    if not math.isfinite(norm):
+        raise ValueError(f"gravity: too large, its magnitude overflows: {tuple(g.tolist())}")
+    if norm == 0.0:
+        return Water(gravity=0.0, normal=up_without_gravity)
+    return Water(gravity=norm, normal=tuple(-g / norm))
