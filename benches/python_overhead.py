@@ -1,7 +1,7 @@
 """Python-side performance of the bindings (a benchmark script, not a test).
 
     python benches/python_overhead.py [--poses 10000] [--repeat 7]
-                                      [--only calls|batch|rapier|add]
+                                      [--only calls|batch|rapier|mujoco|add]
                                       [--bodies 100] [--steps 30] [--before REV]
 
 1. Per-call cost of ``mesh.buoyancy`` on the 12-triangle cube (goal: at most 3 µs), for the
@@ -18,7 +18,13 @@
    re-implementation before the controller: ``--before ced904e``). Each figure is the median
    step of a burst of ``--steps`` steps, the best of ``--repeat`` bursts, the implementations
    taking turns so that the machine's load weighs on all of them alike.
-4. ``Controller.add`` of 1,000 bodies of a sphere of 2,352 triangles (more than the damping's
+4. ``buoyancy.mujoco``: ``FloatingBodies.apply`` per body for 100 bodies of a MuJoCo model
+   (box geoms of 12 triangles; the same boxes floating with the bunny's mesh; and boxes on
+   hinges, whose masses the adapter reads through the joints, ``J·M⁻¹·Jᵀ``), half submerged,
+   tilted and moving; against ``Controller.step`` on the same arrays, so that the difference is
+   the Python glue (goal: at most 5 µs per body), and ``mj_step`` for scale. Medians of bursts
+   of ``--steps`` steps, best of ``--repeat``.
+5. ``Controller.add`` of 1,000 bodies of a sphere of 2,352 triangles (more than the damping's
    reduced copy takes): all of one ``Mesh``, and each of its own equal ``Mesh`` (built in the
    loop, its own cost timed apart). The bodies share the core mesh and its reduced copy, built
    once; best of ``--repeat`` runs. First, on Linux, the memory the process holds once the
@@ -277,6 +283,103 @@ def rapier_overhead(args: argparse.Namespace) -> None:
     )
 
 
+class MujocoScene:
+    """``bodies`` boxes (half extents 0.3 × 0.2 × 0.15 m, density 500 kg/m³) in a MuJoCo model,
+    on free joints or on hinges (``hinged``), floating with ``buoyancy.mujoco`` (on ``mesh`` when
+    given, their geoms otherwise): half submerged, tilted and moving."""
+
+    def __init__(self, bodies: int, mesh: buoyancy.Mesh | None, hinged: bool) -> None:
+        import mujoco
+
+        from buoyancy.mujoco import FloatingBodies
+
+        joint = '<joint type="hinge" axis="1 0 0"/>' if hinged else "<freejoint/>"
+        xml = "".join(
+            f'<body name="b{i}" pos="{(i % 10) * 1.0} {(i // 10) * 1.0} {-0.02 + 0.005 * (i % 7)}" '
+            f'euler="{3 * (i % 5)} 10 0">{joint}<geom type="box" size="0.3 0.2 0.15" density="500"/></body>'
+            for i in range(bodies)
+        )
+        self.model = mujoco.MjModel.from_xml_string(f"<mujoco><worldbody>{xml}</worldbody></mujoco>")
+        self.data = mujoco.MjData(self.model)
+        rng = np.random.default_rng(1)
+        self.data.qvel[:] = rng.uniform(-0.3, 0.3, self.model.nv)
+        self.floating = FloatingBodies.for_model(self.model)
+        for i in range(bodies):
+            self.floating.register(f"b{i}", mesh)
+        self.bodies = bodies
+        self.mujoco = mujoco
+        mujoco.mj_forward(self.model, self.data)
+
+    def burst(self, steps: int) -> dict[str, float]:
+        """Over ``steps`` steps, the medians, s per body, of ``apply``, of the glue in it
+        (``apply`` less the time inside ``Controller.step``), of the glue's CPU time on this
+        thread, and of the rest of MuJoCo's step (``mj_step2`` after ``mj_step1``)."""
+        mujoco, model, data = self.mujoco, self.model, self.data
+        inner: list[tuple[float, float]] = []
+        controller = self.floating._controller
+        self.floating._controller = _Timed(controller, inner)
+        times: dict[str, list[float]] = {"apply": [], "glue": [], "glue_cpu": [], "world": []}
+        try:
+            for _ in range(steps):
+                inner.clear()
+                mujoco.mj_step1(model, data)
+                t0, c0 = time.perf_counter(), time.thread_time()
+                self.floating.apply(data)
+                t1, c1 = time.perf_counter(), time.thread_time()
+                mujoco.mj_step2(model, data)
+                t2 = time.perf_counter()
+                times["apply"].append(t1 - t0)
+                times["glue"].append(t1 - t0 - sum(t for t, _ in inner))
+                times["glue_cpu"].append(c1 - c0 - sum(c for _, c in inner))
+                times["world"].append(t2 - t1)
+        finally:
+            self.floating._controller = controller
+        return {key: float(np.median(t)) / self.bodies for key, t in times.items()}
+
+
+def mujoco_overhead(args: argparse.Namespace) -> None:
+    try:
+        import mujoco
+    except ImportError as error:
+        print(f"\n## buoyancy.mujoco: skipped, mujoco cannot be imported ({error})")
+        return
+    name, bunny = bunny_or_knot()
+    cases = [
+        ("box geoms, free", None, False),
+        (f"{name} mesh, free", bunny, False),
+        ("box geoms, hinged", None, True),
+    ]
+    print(
+        f"\n## buoyancy.mujoco: FloatingBodies.apply for {args.bodies} bodies, µs per body "
+        f"(mujoco {mujoco.__version__}; goal: glue <= 5 µs)\n"
+    )
+    header = (
+        "| bodies | triangles | apply | Controller.step | glue: apply − Controller.step | glue, CPU time | mj_step2 |"
+    )
+    print(header)
+    print("|" + "---|" * (header.count("|") - 1))
+    for label, mesh, hinged in cases:
+        scene = MujocoScene(args.bodies, mesh, hinged)
+        triangles = scene.floating.parts("b0")[0][0].n_triangles
+        best: dict[str, float] = {}
+        steps = args.steps if mesh is None else max(5, args.steps // 3)
+        for _ in range(args.repeat):
+            for key, value in scene.burst(steps).items():
+                best[key] = min(best.get(key, np.inf), value)
+        controller = best["apply"] - best["glue"]
+        print(
+            f"| {label} | {triangles} | {best['apply'] * 1e6:.2f} | {controller * 1e6:.2f} | "
+            f"{best['glue'] * 1e6:.2f} | {best['glue_cpu'] * 1e6:.2f} | {best['world'] * 1e6:.2f} |"
+        )
+    print(
+        "\n(apply: read every body's kinematics from MjData (and, for hinged bodies, their masses "
+        "through the joints), one Controller.step, add the forces to xfrc_applied; Controller.step: "
+        "the Rust step inside it (best apply less best glue); glue: apply less the time spent inside "
+        "its Controller.step, step by step, in wall-clock time and in this thread's CPU time; "
+        "mj_step2: the rest of MuJoCo's own step, for scale)"
+    )
+
+
 def add_bodies(args: argparse.Namespace) -> None:
     sphere = buoyancy.shapes.uv_sphere(0.62, 49, 25)
     vertices, faces = sphere.vertices, sphere.faces
@@ -327,16 +430,20 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--poses", type=int, default=10_000)
     parser.add_argument("--repeat", type=int, default=7)
-    parser.add_argument("--only", choices=["calls", "batch", "rapier", "add"], help="run one section only")
-    parser.add_argument("--bodies", type=int, default=100, help="bodies of the rapier section (default 100)")
-    parser.add_argument("--steps", type=int, default=30, help="steps per burst of the rapier section (default 30)")
+    parser.add_argument("--only", choices=["calls", "batch", "rapier", "mujoco", "add"], help="run one section only")
+    parser.add_argument(
+        "--bodies", type=int, default=100, help="bodies of the rapier and mujoco sections (default 100)"
+    )
+    parser.add_argument(
+        "--steps", type=int, default=30, help="steps per burst of the rapier and mujoco sections (default 30)"
+    )
     parser.add_argument(
         "--before", metavar="REV", help="also time buoyancy/rapier.py of this git revision (e.g. ced904e)"
     )
     args = parser.parse_args()
 
     print(f"buoyancy {buoyancy.__version__}, Python {sys.version.split()[0]}, {os.cpu_count()} CPUs\n")
-    sections = {"calls": calls, "batch": batch, "rapier": rapier_overhead, "add": add_bodies}
+    sections = {"calls": calls, "batch": batch, "rapier": rapier_overhead, "mujoco": mujoco_overhead, "add": add_bodies}
     for key, section in sections.items():
         if args.only in (None, key):
             section(args)

@@ -706,10 +706,9 @@ class _Arrays:
                 rows = jacobian[6 * k : 6 * k + 6]
                 mujoco.mj_jacBodyCom(model, data, rows[:3], rows[3:], int(self.ids[n]))
             mujoco.mj_solveM(model, data, self.solved, jacobian)
-            for k, n in enumerate(self.jointed):
-                rows = jacobian[6 * k : 6 * k + 6].reshape(6, nv)
-                compliance = rows @ self.solved[6 * k : 6 * k + 6].T
-                inverse_masses[n] = np.diag(compliance[:3, :3])
-                angular = compliance[3:, 3:]
-                inertias[n] = 0.5 * (angular + angular.T)
+            rows = jacobian.reshape(-1, 6, nv)
+            compliance = np.einsum("kin,kjn->kij", rows, self.solved.reshape(-1, 6, nv))
+            inverse_masses[self.jointed] = np.einsum("kii->ki", compliance[:, :3, :3])
+            angular = compliance[:, 3:, 3:]
+            inertias[self.jointed] = 0.5 * (angular + angular.transpose(0, 2, 1))
         return inverse_masses, inertias
