@@ -437,6 +437,9 @@ class Mesh:
     @classmethod
     def close_openings(cls, vertices: npt.ArrayLike, faces: npt.ArrayLike) -> Mesh:
         """A hull whose planar openings are closed by flat lids (a hull without a deck)."""
+    @classmethod
+    def welded(cls, vertices: npt.ArrayLike, faces: npt.ArrayLike) -> Mesh:
+        """A closed mesh from a tessellation that repeats its vertices (seams, poles, corners)."""
     @property
     def openings(self) -> list[_IntArray]:
         """Each opening's rim, vertex indices in order."""

@@ -1,5 +1,5 @@
 """What the engine adapters (:mod:`buoyancy.rapier`, :mod:`buoyancy.mujoco`) share: the water
-an engine's gravity implies."""
+an engine's gravity implies, and the quaternions ``(x, y, z, w)`` that place parts on bodies."""
 
 from __future__ import annotations
 
@@ -32,3 +32,29 @@ def water_for_gravity(
     if norm == 0.0:
         return Water(gravity=0.0, normal=up_without_gravity)
     return Water(gravity=norm, normal=tuple(-g / norm))
+
+
+def quaternion_product(a: npt.ArrayLike, b: npt.ArrayLike) -> np.ndarray:
+    """``a ⊗ b`` of quaternions ``(x, y, z, w)``: the rotation ``b``, then ``a``."""
+    (ax, ay, az, aw), (bx, by, bz, bw) = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+    return np.array(
+        [
+            aw * bx + ax * bw + ay * bz - az * by,
+            aw * by - ax * bz + ay * bw + az * bx,
+            aw * bz + ax * by - ay * bx + az * bw,
+            aw * bw - ax * bx - ay * by - az * bz,
+        ]
+    )
+
+
+def rotation_matrix(q: npt.ArrayLike) -> np.ndarray:
+    """The rotation matrix of the unit quaternion ``(x, y, z, w)``."""
+    q = np.asarray(q, dtype=np.float64)
+    x, y, z, w = q / np.linalg.norm(q)
+    return np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+        ]
+    )

@@ -89,7 +89,7 @@ import numpy.typing as npt
 
 from . import shapes
 from ._core import Controller, DampingCoefficients, Equilibrium, FloatReport, Mesh, Water, load
-from ._glue import water_for_gravity
+from ._glue import quaternion_product, rotation_matrix, water_for_gravity
 
 try:
     import mujoco
@@ -117,31 +117,6 @@ def _xyzw(wxyz: npt.ArrayLike) -> np.ndarray:
     """MuJoCo's quaternion ``(w, x, y, z)`` as ``(x, y, z, w)``."""
     q = np.asarray(wxyz, dtype=np.float64)
     return q[..., [1, 2, 3, 0]]
-
-
-def _quaternion_product(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """``a ⊗ b`` of quaternions ``(x, y, z, w)``: the rotation ``b``, then ``a``."""
-    (ax, ay, az, aw), (bx, by, bz, bw) = a, b
-    return np.array(
-        [
-            aw * bx + ax * bw + ay * bz - az * by,
-            aw * by - ax * bz + ay * bw + az * bx,
-            aw * bz + ax * by - ay * bx + az * bw,
-            aw * bw - ax * bx - ay * by - az * bz,
-        ]
-    )
-
-
-def _rotation_matrix(q: np.ndarray) -> np.ndarray:
-    """The rotation matrix of the unit quaternion ``(x, y, z, w)``."""
-    x, y, z, w = q / np.linalg.norm(q)
-    return np.array(
-        [
-            [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
-        ]
-    )
 
 
 def _name(model: Any, kind: Any, index: int) -> str:
@@ -225,7 +200,7 @@ def _geom_parts(model: Any, body: int, cache: dict[tuple[Any, ...], Mesh]) -> li
     parts = []
     for g in geoms:
         mesh, turn = _geom_mesh(model, g, cache)
-        quaternion = _quaternion_product(_xyzw(model.geom_quat[g]), turn)
+        quaternion = quaternion_product(_xyzw(model.geom_quat[g]), turn)
         parts.append((mesh, np.array(model.geom_pos[g], dtype=np.float64), quaternion))
     _refuse_overlaps(model, label, geoms, parts)
     return parts
@@ -257,7 +232,7 @@ def _refuse_overlaps(model: Any, body: str, geoms: list[int], parts: list[tuple[
         return
     corners = []
     for mesh, position, quaternion in parts:
-        vertices = mesh.vertices @ _rotation_matrix(quaternion).T + position
+        vertices = mesh.vertices @ rotation_matrix(quaternion).T + position
         corners.append(vertices[mesh.faces])
     boxes = [(c.reshape(-1, 3).min(axis=0), c.reshape(-1, 3).max(axis=0)) for c in corners]
     n = _OVERLAP_GRID

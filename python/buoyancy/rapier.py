@@ -2,7 +2,8 @@
 rapier's official Python binding (``pip install 'buoyancy[rapier]'``).
 
 :class:`FloatingBodies` holds the bodies that float, each made of one or more closed
-:class:`buoyancy.Mesh` es placed on the body, and the water. Call :meth:`FloatingBodies.apply`
+:class:`buoyancy.Mesh` es placed on the body (its colliders meshed as the Rust adapter meshes
+them, :func:`collider_parts`, or meshes you give), and the water. Call :meth:`FloatingBodies.apply`
 once per step, before the world steps (or :meth:`FloatingBodies.step`, which does both): it reads
 every registered body's state from rapier, computes the exact buoyancy and the hydrodynamic
 damping of all of them in one call to the engine-independent :class:`buoyancy.Controller` (in
@@ -21,7 +22,7 @@ Example (a 1 m crate of density 500 kg/m³ floats half submerged)::
         [rapier3d.Collider.cuboid(0.5, 0.5, 0.5).density(500.0)],
     )
     water = FloatingBodies.for_world(world)        # fresh water, surface y = 0, y up
-    water.register(crate, buoyancy.shapes.cube())  # the body's shape, in its own frame
+    water.register(crate)                          # its collider, meshed, is its hull
     for _ in range(600):
         water.step(world)                          # apply(...), then world.step()
     print(world.rigid_bodies[crate].translation)   # y ≈ 0: half under water
@@ -89,7 +90,7 @@ Frames and units
 from __future__ import annotations
 
 from collections.abc import Hashable, Sequence
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 import numpy.typing as npt
@@ -104,7 +105,7 @@ from ._core import (
     _rapier_bodies,
     _world_inverse_inertias,
 )
-from ._glue import water_for_gravity
+from ._glue import quaternion_product, rotation_matrix, water_for_gravity
 
 try:
     import rapier3d
@@ -113,7 +114,7 @@ except ImportError as error:  # pragma: no cover - exercised only without rapier
         "buoyancy.rapier needs rapier's Python binding: pip install 'buoyancy[rapier]' (or pip install rapier3d)"
     ) from error
 
-__all__ = ["FloatReport", "FloatingBodies"]
+__all__ = ["FloatReport", "FloatingBodies", "collider_parts"]
 
 _DYNAMIC = rapier3d.RigidBodyType.DYNAMIC
 
@@ -337,22 +338,27 @@ class FloatingBodies:
         water: Water | None = None,
         method: str = "exact",
         damping: DampingCoefficients | None = None,
-        damping_resolution: int | str = 384,
+        damping_resolution: int | Literal["full"] = 384,
     ) -> None:
         world_water = water_for_gravity(gravity)  # checks the gravity even when `water` is given
         self._controller = Controller(
             world_water if water is None else water, method, damping, damping_resolution=damping_resolution
         )
         self._bodies = _Bodies()
+        self._world: Any = None
+        self._collider_meshes: dict[tuple[Any, ...], Mesh] = {}
 
     @classmethod
     def for_world(cls, world: Any, **kwargs: Any) -> FloatingBodies:
-        """A ``FloatingBodies`` for a ``rapier3d.PhysicsWorld``, with the world's gravity.
+        """A ``FloatingBodies`` for a ``rapier3d.PhysicsWorld``, with the world's gravity; its
+        :meth:`register` reads a body's colliders from ``world`` when no mesh is given.
 
         Note that a ``PhysicsWorld()`` built without ``gravity=`` has none, and then nothing
         floats (``g = 0``).
         """
-        return cls(_VEC(world.gravity), **kwargs)
+        floating = cls(_VEC(world.gravity), **kwargs)
+        floating._world = world
+        return floating
 
     # --- settings -----------------------------------------------------------------------------
 
@@ -395,14 +401,14 @@ class FloatingBodies:
         self._controller.damping = damping
 
     @property
-    def damping_resolution(self) -> int | str:
+    def damping_resolution(self) -> int | Literal["full"]:
         """How finely the pressure drag of the bodies without their own is integrated: the most
         triangles of the reduced copy of each mesh, or ``"full"``. Setting it builds the reduced
         copies it asks for (once per mesh)."""
         return self._controller.damping_resolution
 
     @damping_resolution.setter
-    def damping_resolution(self, resolution: int | str) -> None:
+    def damping_resolution(self, resolution: int | Literal["full"]) -> None:
         self._controller.damping_resolution = resolution
 
     # --- bodies -------------------------------------------------------------------------------
@@ -420,36 +426,57 @@ class FloatingBodies:
     def register(
         self,
         body: Hashable,
-        mesh: Mesh | Sequence[Mesh | tuple[Mesh, npt.ArrayLike, npt.ArrayLike]],
+        mesh: Mesh | Sequence[Mesh | tuple[Mesh, npt.ArrayLike, npt.ArrayLike]] | None = None,
         *,
+        world: Any = None,
+        colliders: Sequence[Any] | None = None,
+        subdivisions: int = 32,
         water: Water | None = None,
         method: str | None = None,
         damping: DampingCoefficients | None = None,
-        damping_resolution: int | str | None = None,
+        damping_resolution: int | Literal["full"] | None = None,
     ) -> None:
         """Makes ``body`` (a ``rapier3d.RigidBodyHandle``) float.
 
-        ``mesh`` is a closed mesh in the body's local frame (the frame of ``RigidBody.position``),
-        e.g. the vertices and faces of its trimesh collider; or a list of parts, each such a mesh
-        or a tuple ``(mesh, position, quaternion)`` of a mesh in its own frame placed on the body
-        (``x_body = R @ x_mesh + position``, the quaternion ``(x, y, z, w)``), e.g. one per
-        collider with its ``position_wrt_parent``. ``water``, ``method``, ``damping`` and
-        ``damping_resolution`` override the world's for this body (``water``: a still one, its
-        density, level and normal; the body floats on the world's waves, if any). Registering a
-        body again replaces its meshes and overrides (the force already applied is kept track
-        of)."""
-        if not isinstance(mesh, (Mesh, list, tuple)):
+        Without ``mesh``, the body floats with its colliders, meshed as the Rust adapter meshes
+        them (see :func:`collider_parts`): every collider attached to it, or only the handles in
+        ``colliders``, read from ``world`` (the ``rapier3d.PhysicsWorld`` holding the body; by
+        default the one given to :meth:`for_world`); ``subdivisions`` segments around balls,
+        cylinders, capsules and cones. ``mesh`` instead is a closed mesh in the body's local frame
+        (the frame of ``RigidBody.position``); or a list of parts, each such a mesh or a tuple
+        ``(mesh, position, quaternion)`` of a mesh in its own frame placed on the body
+        (``x_body = R @ x_mesh + position``, the quaternion ``(x, y, z, w)``). ``water``,
+        ``method``, ``damping`` and ``damping_resolution`` override the world's for this body
+        (``water``: a still one, its density, level and normal; the body floats on the world's
+        waves, if any). Registering a body again replaces its meshes and overrides (the force
+        already applied is kept track of).
+
+        ``ValueError`` for a body or collider the world does not hold, a collider attached to
+        another body, or a shape that cannot float (a half-space, height field, …: give
+        ``mesh``); nothing is registered then."""
+        if mesh is None:
+            world = self._world if world is None else world
+            if world is None:
+                raise TypeError(
+                    "world: register(body) without a mesh reads the body's colliders from its world: pass "
+                    "world=the rapier3d.PhysicsWorld, or build FloatingBodies.for_world(world)"
+                )
+            mesh = collider_parts(world, body, colliders, subdivisions=subdivisions, cache=self._collider_meshes)
+        elif not isinstance(mesh, (Mesh, list, tuple)):
             raise TypeError(
                 f"mesh: expected a buoyancy.Mesh, or a list of meshes and (mesh, position, quaternion) "
                 f"parts, got {type(mesh).__name__}"
             )
         i = self._bodies.index.get(body)
-        overrides = dict(method=method, water=water, damping=damping, damping_resolution=damping_resolution)
         if i is None:
-            self._controller.add(mesh, **overrides)
+            self._controller.add(
+                mesh, method=method, water=water, damping=damping, damping_resolution=damping_resolution
+            )
             self._bodies.add(body)
         else:
-            self._controller.replace(i, mesh, **overrides)
+            self._controller.replace(
+                i, mesh, method=method, water=water, damping=damping, damping_resolution=damping_resolution
+            )
 
     def unregister(self, body: Hashable, bodies: Any) -> bool:
         """Stops ``body`` from floating and takes back the force and torque the adapter added to
@@ -622,6 +649,143 @@ class FloatingBodies:
             scalars["active"],
             scalars["sleeping"],
         )
+
+
+def collider_parts(
+    world: Any,
+    body: Any,
+    colliders: Sequence[Any] | None = None,
+    *,
+    subdivisions: int = 32,
+    cache: dict[tuple[Any, ...], Mesh] | None = None,
+) -> list[tuple[Mesh, np.ndarray, np.ndarray]]:
+    """The colliders of ``body`` (a ``rapier3d.RigidBodyHandle`` of ``world``, a
+    ``rapier3d.PhysicsWorld``) as closed meshes placed on the body: ``(mesh, position,
+    quaternion (x, y, z, w))`` parts in the body's frame, one per shape (a compound's shapes each
+    placed by its pose), every collider attached to the body or only those in ``colliders``
+    (repeats count once).
+
+    The meshes are rapier's own tessellations (``to_trimesh``, parry's, as the Rust adapter
+    ``buoyancy-rapier`` uses them), welded (:meth:`buoyancy.Mesh.welded`): cuboids and convex
+    polyhedra exactly, trimeshes as they are, balls, capsules, cylinders and cones with
+    ``subdivisions`` segments around their axis (half as many, even, from pole to pole). Those
+    are inscribed in the round shapes, so they hold a little less than the collider's volume
+    (``subdivisions = 32``: 1.3 % less for a ball). ``cache`` (a dict kept between calls) shares
+    one mesh between equal shapes.
+
+    ``ValueError`` for a body or collider the world does not hold, a collider attached to
+    another body, no collider at all, or a shape that cannot float (a half-space, a height
+    field, a round or voxel shape, …: give ``register`` a mesh).
+
+    >>> import rapier3d
+    >>> world = rapier3d.PhysicsWorld(gravity=(0.0, -9.81, 0.0))
+    >>> handle = world.add_body(rapier3d.RigidBody.dynamic(), [rapier3d.Collider.cuboid(1.0, 0.5, 0.25)])
+    >>> ((mesh, position, quaternion),) = collider_parts(world, handle)
+    >>> mesh.n_triangles, mesh.volume
+    (12, 1.0)
+    """
+    if isinstance(subdivisions, bool) or not isinstance(subdivisions, (int, np.integer)) or subdivisions < 0:
+        raise ValueError(f"subdivisions: expected a non-negative integer, got {subdivisions!r}")
+    cache = {} if cache is None else cache
+    try:
+        rigid_body = world.rigid_bodies[body]
+    except (KeyError, IndexError, TypeError, ValueError, AttributeError) as error:
+        raise ValueError(f"body: {body!r} is not a body of this world ({error})") from error
+    handles = list(rigid_body.colliders) if colliders is None else list(dict.fromkeys(colliders))
+    parts: list[tuple[Mesh, np.ndarray, np.ndarray]] = []
+    for handle in handles:
+        try:
+            collider = world.colliders[handle]
+        except (KeyError, IndexError, TypeError, ValueError) as error:
+            raise ValueError(f"colliders: {handle!r} is not a collider of this world ({error})") from error
+        if collider.parent != body:
+            raise ValueError(f"colliders: {handle!r} is attached to {collider.parent!r}, not to the body {body!r}")
+        pose = collider.position_wrt_parent
+        _append_shape_parts(
+            handle, collider.shape, _VEC(pose.translation), _ROTATION(pose.rotation), subdivisions, cache, parts
+        )
+    if not parts:
+        raise ValueError(f"body: {body!r} has no collider to float with; give register a mesh")
+    return parts
+
+
+def _append_shape_parts(
+    handle: Any,
+    shape: Any,
+    position: Sequence[float],
+    quaternion: Sequence[float],
+    subdivisions: int,
+    cache: dict[tuple[Any, ...], Mesh],
+    parts: list[tuple[Mesh, np.ndarray, np.ndarray]],
+) -> None:
+    """Appends the meshes of ``shape``, placed on the body at ``position``/``quaternion``."""
+    kind = shape.shape_type
+    around = max(subdivisions, 3)
+    pole_to_pole = max(subdivisions // 2, 2)
+    pole_to_pole += pole_to_pole % 2  # even: a capsule's two hemispheres have whole rings
+    types = rapier3d.ShapeType
+    if kind == types.COMPOUND:
+        for sub_pose, sub_shape in shape.as_compound().shapes():
+            sub_position = _VEC(sub_pose.translation)
+            sub_quaternion = _ROTATION(sub_pose.rotation)
+            # The body ← collider ← sub-shape chain: p_body = q ⊗ (q_sub ⊗ p ⊗ q_sub⁻¹ + t_sub) ⊗ q⁻¹ + t.
+            rotation = rotation_matrix(quaternion)
+            _append_shape_parts(
+                handle,
+                sub_shape,
+                tuple(rotation @ np.asarray(sub_position) + np.asarray(position)),
+                tuple(quaternion_product(quaternion, sub_quaternion)),
+                subdivisions,
+                cache,
+                parts,
+            )
+        return
+    if kind == types.TRIMESH:
+        trimesh = shape.as_trimesh()
+        key: tuple[Any, ...] = (
+            "trimesh",
+            np.asarray(trimesh.vertices).tobytes(),
+            np.asarray(trimesh.indices).tobytes(),
+        )
+        tessellation = None
+    else:
+        args: tuple[int, ...] = ()
+        if kind == types.CUBOID:
+            typed = shape.as_cuboid()
+            key = ("cuboid", _VEC(typed.half_extents))
+        elif kind == types.BALL:
+            typed, args = shape.as_ball(), (around, pole_to_pole)
+            key = ("ball", typed.radius, *args)
+        elif kind == types.CAPSULE:
+            typed, args = shape.as_capsule(), (around, pole_to_pole)
+            key = ("capsule", _POINT(typed.a), _POINT(typed.b), typed.radius, *args)
+        elif kind == types.CYLINDER:
+            typed, args = shape.as_cylinder(), (around,)
+            key = ("cylinder", typed.half_height, typed.radius, *args)
+        elif kind == types.CONE:
+            typed, args = shape.as_cone(), (around,)
+            key = ("cone", typed.half_height, typed.radius, *args)
+        elif kind == types.CONVEX_POLYHEDRON:
+            typed, args = shape.as_convex_polyhedron(), ()
+            key = ("convex", np.asarray(typed.points).tobytes())
+        else:
+            raise ValueError(
+                f"colliders: {handle!r} is a {str(kind).rsplit('.', 1)[-1].lower()} shape, which cannot float; "
+                "give register a closed buoyancy.Mesh in the body's frame (mesh=...)"
+            )
+        tessellation = (typed, args)
+    mesh = cache.get(key)
+    if mesh is None:
+        try:
+            if tessellation is None:
+                mesh = Mesh(np.asarray(trimesh.vertices, dtype=np.float64), np.asarray(trimesh.indices))
+            else:
+                vertices, faces = tessellation[0].to_trimesh(*tessellation[1])
+                mesh = Mesh.welded(np.asarray(vertices, dtype=np.float64), faces)
+        except ValueError as error:
+            raise ValueError(f"colliders: {handle!r}: {error}") from error
+        cache[key] = mesh
+    parts.append((mesh, np.array(position, dtype=np.float64), np.array(quaternion, dtype=np.float64)))
 
 
 def _scalars(rb: Any) -> tuple[float, float, bool, bool, int]:

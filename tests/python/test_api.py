@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib
 import pathlib
 import pickle
 import re
@@ -480,6 +481,7 @@ def test_docstring_examples() -> None:
         "Mesh.buoyancy": buoyancy.Mesh.buoyancy,
         "Mesh.buoyancy_batch": buoyancy.Mesh.buoyancy_batch,
         "Mesh.from_trimesh": buoyancy.Mesh.from_trimesh,
+        "Mesh.welded": buoyancy.Mesh.welded,
         "Mesh.transformed": buoyancy.Mesh.transformed,
         "Mesh.scaled": buoyancy.Mesh.scaled,
         "Mesh.translated": buoyancy.Mesh.translated,
@@ -490,6 +492,10 @@ def test_docstring_examples() -> None:
         "uv_sphere": buoyancy.shapes.uv_sphere,
         "torus": buoyancy.shapes.torus,
         "torus_knot": buoyancy.shapes.torus_knot,
+        "cuboid": buoyancy.shapes.cuboid,
+        "ellipsoid": buoyancy.shapes.ellipsoid,
+        "cylinder": buoyancy.shapes.cylinder,
+        "capsule": buoyancy.shapes.capsule,
         "Water": buoyancy.Water,
         "Mesh.damping": buoyancy.Mesh.damping,
         "Mesh.damping_stiffness": buoyancy.Mesh.damping_stiffness,
@@ -509,9 +515,9 @@ def test_docstring_examples() -> None:
     assert all(attempted.values()), f"docstrings without examples: {[n for n, k in attempted.items() if not k]}"
 
 
-def rapier3d_available() -> bool:
+def importable(module: str) -> bool:
     try:
-        import rapier3d  # noqa: F401
+        importlib.import_module(module)
     except ImportError:
         return False
     return True
@@ -522,8 +528,10 @@ def test_readme_python_example() -> None:
     blocks = re.findall(r"```python\n(.*?)```", readme, re.S)
     assert blocks, "the README has a ```python example"
     for block in blocks:
-        if "import rapier3d" in block and not rapier3d_available():
+        if "import rapier3d" in block and not importable("rapier3d"):
             continue  # the buoyancy.rapier example; tests/python/test_rapier.py says it skips
+        if "import mujoco" in block and not importable("mujoco"):
+            continue  # the buoyancy.mujoco example; tests/python/test_mujoco.py says it skips
         if ">>>" in block:
             run_examples(block, "README")
         else:

@@ -6,15 +6,12 @@ each test below names the Rust test it ports. Both adapters are glue over the sa
 the Rust one meshes rapier's colliders, so the shapes come from buoyancy.shapes or rapier's own
 ``to_trimesh``.
 
-Not ported, because they test the Rust adapter's meshing of colliders, which the Python adapter
-does not do (it floats the meshes it is given, see FloatingBodies.register):
-
-* several_parts.rs ``repeated_collider_floats_once`` (the collider list of FloatOptions): its
-  Python counterpart is ``test_registering_again_replaces_the_meshes`` (a body floats once);
-* floating.rs ``per_body_water_and_errors``, its errors ``UnsupportedShape`` (a half-space
-  collider) and ``NothingToFloat`` (a body without colliders): their Python counterparts are the
-  TypeError and ValueError of ``register`` for something that is not a mesh or no mesh at all
-  (``test_bookkeeping_and_errors``).
+Registered without a mesh, a body floats with its colliders meshed as the Rust adapter meshes
+them (rapier's own ``to_trimesh``, welded): ``test_every_supported_shape_floats`` runs both ways,
+and ``test_colliders_become_parts`` holds the placement of translated, rotated and compound
+colliders, a repeated collider floating once (several_parts.rs ``repeated_collider_floats_once``)
+and the errors ``UnsupportedShape`` and ``NothingToFloat`` (floating.rs
+``per_body_water_and_errors``).
 
 Plus what is the Python adapter's own: the example settles within 1% of theory, the report
 against the core at the body's pose, removed bodies, bad gravity, the module docstring, forces
@@ -37,7 +34,7 @@ import pytest
 import buoyancy
 from buoyancy._sample_meshes import find_sample_mesh
 
-from conftest import REPO
+from conftest import REPO, quaternion_matrix
 
 try:
     import rapier3d
@@ -343,9 +340,11 @@ def test_per_body_water_and_method() -> None:
     assert abs(pool.body(low).translation.y) < 0.005
 
 
-def test_every_supported_shape_floats() -> None:
-    # floating.rs every_supported_shape_floats, with the meshes rapier makes of its shapes: they
-    # float with the volume rapier gives them (rapier's mass uses the exact round volumes).
+@pytest.mark.parametrize("source", ["given meshes", "colliders"])
+def test_every_supported_shape_floats(source: str) -> None:
+    # floating.rs every_supported_shape_floats, with the meshes rapier makes of its shapes (given,
+    # or made by register from the colliders): they float with the volume rapier gives them
+    # (rapier's mass uses the exact round volumes).
     hull_points = [(-0.4, -0.3, -0.3), (0.4, -0.3, -0.3), (0.0, 0.4, -0.3), (0.0, 0.0, 0.4)]
     hull = rapier3d.SharedShape.convex_hull(hull_points)
     compound = [
@@ -369,7 +368,22 @@ def test_every_supported_shape_floats() -> None:
     ]
     for name, collider, mesh in shapes:
         pool = Pool()
-        h = pool.add(rapier3d.RigidBody.dynamic().translation((0.0, 0.5, 0.0)), collider.density(600.0), mesh)
+        if source == "given meshes":
+            h = pool.add(rapier3d.RigidBody.dynamic().translation((0.0, 0.5, 0.0)), collider.density(600.0), mesh)
+        else:
+            h = pool.add(
+                rapier3d.RigidBody.dynamic().translation((0.0, 0.5, 0.0)),
+                collider.density(600.0),
+                None,
+                subdivisions=64,
+            )
+            given = mesh if isinstance(mesh, list) else [mesh]
+            made = pool.water.parts(h)
+            assert made is not None
+            for (made_mesh, position, _), part in zip(made, given, strict=True):
+                given_mesh, given_position = (part, (0.0, 0.0, 0.0)) if isinstance(part, buoyancy.Mesh) else part[:2]
+                assert made_mesh.volume == pytest.approx(given_mesh.volume, rel=1e-6), name
+                np.testing.assert_allclose(position, given_position, atol=1e-7)
         pool.run(40.0)
         pool.apply()
         rb = pool.body(h)
@@ -377,6 +391,69 @@ def test_every_supported_shape_floats() -> None:
         submerged = pool.water.report(h).submerged_volume
         assert abs(submerged - expected) < 0.01 * expected, f"{name}: {submerged} vs {expected}"
         assert np.linalg.norm(vec(rb.linvel)) < 0.01, f"{name} still moves"
+
+
+def test_colliders_become_parts() -> None:
+    pool = Pool()
+    turn = axis_angle((1.0, 2.0, 3.0), 0.7)
+    nested = rapier3d.SharedShape.compound(
+        [(((0.0, 1.0, 0.0), tuple(turn.to_tuple())), rapier3d.SharedShape.cuboid(0.1, 0.2, 0.3))]
+    )
+    colliders = [
+        rapier3d.Collider.cuboid(0.5, 0.25, 0.125).translation((1.0, 2.0, 3.0)).rotation(tuple(turn.scaled_axis)),
+        rapier3d.Collider.new(nested).translation((-1.0, 0.0, 0.0)).rotation(tuple(turn.scaled_axis)),
+        rapier3d.Collider.ball(0.3),
+    ]
+    handle = pool.world.add_body(rapier3d.RigidBody.dynamic(), colliders)
+    pool.water.register(handle)
+    parts = pool.water.parts(handle)
+    assert parts is not None and len(parts) == 3
+    # Each box placed on the body has its corners where rapier's own poses put them: the
+    # collider's pose on the body, then (in the compound) the shape's pose in the collider.
+    rb = pool.body(handle)
+    first, second = (pool.world.colliders[c].position_wrt_parent for c in rb.colliders[:2])
+    ((sub_pose, _),) = pool.world.colliders[rb.colliders[1]].shape.as_compound().shapes()
+    signs = np.array(list(itertools.product((-1.0, 1.0), repeat=3)))
+    for (mesh, position, quaternion), iso, half in zip(
+        parts[:2], [first, second * sub_pose], [(0.5, 0.25, 0.125), (0.1, 0.2, 0.3)], strict=True
+    ):
+        placed = mesh.vertices @ quaternion_matrix(quaternion).T + position
+        corners = np.array([vec(iso.transform_point(tuple(c))) for c in signs * half])
+        assert len(placed) == 8
+        distances = np.linalg.norm(placed[:, None, :] - corners[None, :, :], axis=2)
+        assert distances.min(axis=0).max() < 2e-6 and distances.min(axis=1).max() < 2e-6
+    assert parts[0][0].volume == pytest.approx(0.125, rel=1e-6)
+    # The ball: rapier's inscribed tessellation, a little less than the ball.
+    assert 0.98 < parts[2][0].volume / (4 / 3 * math.pi * 0.027) < 1.0
+    # Equal shapes share one mesh.
+    other = pool.world.add_body(rapier3d.RigidBody.dynamic(), [rapier3d.Collider.ball(0.3)])
+    pool.water.register(other)
+    assert pool.water.parts(other)[0][0] is parts[2][0]  # type: ignore[index]
+    # several_parts.rs repeated_collider_floats_once: a collider listed twice floats once.
+    cube = pool.world.add_body(rapier3d.RigidBody.dynamic(), [rapier3d.Collider.cuboid(0.5, 0.5, 0.5)])
+    (c,) = pool.body(cube).colliders
+    pool.water.register(cube, colliders=[c, c])
+    pool.apply()
+    assert len(pool.water.parts(cube)) == 1  # type: ignore[arg-type]
+    assert pool.water.report(cube).submerged_volume == pytest.approx(0.5, abs=1e-6)  # type: ignore[union-attr]
+    # floating.rs per_body_water_and_errors: UnsupportedShape and NothingToFloat.
+    ground = pool.world.add_body(rapier3d.RigidBody.fixed(), [rapier3d.Collider.halfspace((0.0, 1.0, 0.0))])
+    with pytest.raises(ValueError, match=r"halfspace shape, which cannot float.*mesh="):
+        pool.water.register(ground)
+    empty = pool.world.add_body(rapier3d.RigidBody.dynamic(), [])
+    with pytest.raises(ValueError, match="has no collider to float with"):
+        pool.water.register(empty)
+    with pytest.raises(ValueError, match="is attached to"):
+        pool.water.register(cube, colliders=[pool.body(handle).colliders[0]])
+    with pytest.raises(ValueError, match="subdivisions"):
+        pool.water.register(cube, subdivisions=-1)
+    assert ground not in pool.water and empty not in pool.water
+    # Without a world to read the colliders from, register says what to pass.
+    alone = FloatingBodies()
+    with pytest.raises(TypeError, match="world: register.body. without a mesh"):
+        alone.register(cube)
+    alone.register(cube, world=pool.world)
+    assert cube in alone
 
 
 def mechanical_energy(pool: Pool, handles: list[Any]) -> float:

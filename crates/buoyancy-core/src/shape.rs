@@ -572,6 +572,60 @@ pub fn capsule<T: Real>(
     finish_lathe(&full, segments)
 }
 
+/// Welds a tessellation that repeats its vertices (the seams and poles of an engine's sphere,
+/// cylinder or capsule; the corners of a box given face by face) so that [`Mesh::new`](crate::Mesh::new)
+/// sees it closed: every vertex within `10⁻⁶` of the mesh's extent (its bounding box's diagonal)
+/// of an earlier one is replaced by that one in `triangles`, and the triangles that collapse
+/// (two corners the same vertex) are dropped. The merged vertices stay in `points`, unused;
+/// indices out of range are left for [`Mesh::new`](crate::Mesh::new) to report.
+///
+/// ```
+/// use buoyancy_core::{Mesh, nalgebra::Point3, shape};
+///
+/// // A tetrahedron given face by face: 12 vertices, no edge shared until welded.
+/// let corners = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+/// let points: Vec<Point3<f64>> = faces.iter().flatten().map(|&i| corners[i].into()).collect();
+/// let mut triangles: Vec<[u32; 3]> = (0..4).map(|t| [3 * t, 3 * t + 1, 3 * t + 2]).collect();
+/// assert!(Mesh::new(points.clone(), triangles.clone()).is_err());
+/// shape::weld(&points, &mut triangles);
+/// assert!((Mesh::new(points, triangles)?.volume() - 1.0 / 6.0).abs() < 1e-15);
+/// # Ok::<(), buoyancy_core::Error>(())
+/// ```
+pub fn weld(points: &[Point3<f64>], triangles: &mut Vec<[u32; 3]>) {
+    let finite: Vec<&Point3<f64>> = points
+        .iter()
+        .filter(|p| p.coords.iter().all(|c| c.is_finite()))
+        .collect();
+    let Some(first) = finite.first() else {
+        return;
+    };
+    let (lo, hi) = finite
+        .iter()
+        .fold((**first, **first), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
+    let tolerance = 1e-6 * (hi - lo).norm().max(f64::MIN_POSITIVE);
+    let mut order: Vec<usize> = (0..points.len())
+        .filter(|&i| points[i].x.is_finite())
+        .collect();
+    order.sort_by(|&a, &b| points[a].x.total_cmp(&points[b].x));
+    let mut representative: Vec<u32> = (0..points.len() as u32).collect();
+    for (k, &i) in order.iter().enumerate() {
+        for &j in order[..k].iter().rev() {
+            if points[i].x - points[j].x > tolerance {
+                break;
+            }
+            if (points[i] - points[j]).norm() <= tolerance {
+                representative[i] = representative[j];
+                break;
+            }
+        }
+    }
+    for t in triangles.iter_mut() {
+        *t = t.map(|i| representative.get(i as usize).copied().unwrap_or(i));
+    }
+    triangles.retain(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0]);
+}
+
 /// The signed volume `Σ (a · (b × c)) / 6` of a closed mesh (positive when wound outward).
 fn volume(vertices: &[Point3<f64>], triangles: &[[u32; 3]]) -> f64 {
     triangles

@@ -369,6 +369,33 @@ impl PyMesh {
         PyMesh::build_closing_openings(py, shape)
     }
 
+    /// A closed mesh from a tessellation that repeats its vertices (the seams and poles of an
+    /// engine's sphere, cylinder or capsule, such as ``rapier3d``'s ``to_trimesh``; an STL-like
+    /// list of corners face by face): vertices within 1e-6 of the mesh's extent of an earlier one
+    /// are merged and the triangles that collapse dropped (``buoyancy_core::shape::weld``), then
+    /// the mesh is built as ``Mesh(vertices, faces)`` builds it.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> corners = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=float)
+    /// >>> faces = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+    /// >>> soup = corners[faces].reshape(-1, 3)            # 12 vertices, one per corner of a face
+    /// >>> round(buoyancy.Mesh.welded(soup, np.arange(12).reshape(4, 3)).volume, 15)
+    /// 0.166666666666667
+    #[classmethod]
+    #[pyo3(text_signature = "(vertices, faces)")]
+    fn welded(
+        _cls: &Bound<'_, PyType>,
+        py: Python<'_>,
+        vertices: &Bound<'_, PyAny>,
+        faces: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        let (vertices, mut triangles) = mesh_arrays(vertices, faces)?;
+        buoyancy_core::shape::weld(&vertices, &mut triangles);
+        PyMesh::build(py, (vertices, triangles))
+    }
+
     /// The openings closed by lids (:meth:`close_openings`): a list of int64 arrays, each the
     /// indices of one rim's vertices in order; empty for a closed mesh.
     #[getter]

@@ -158,13 +158,13 @@ pub(crate) fn append_meshes(
             });
         }
     };
-    let mut points: Vec<Point3<f64>> = vertices
+    let points: Vec<Point3<f64>> = vertices
         .iter()
         .map(|v| Point3::from(vector_to_nalgebra(*v)))
         .collect();
     let mut triangles = triangles;
     if weld {
-        weld_vertices(&mut points, &mut triangles);
+        buoyancy_core::shape::weld(&points, &mut triangles);
     }
     let mesh = cache
         .mesh(points, triangles)
@@ -179,34 +179,4 @@ pub(crate) fn append_meshes(
 
 fn with_weld<V>((v, t): (Vec<V>, Vec<[u32; 3]>)) -> (Vec<V>, Vec<[u32; 3]>, bool) {
     (v, t, true)
-}
-
-/// Merges vertices closer than 1e-6 of the mesh's extent (parry's generated meshes repeat the
-/// seam and pole vertices) and drops the triangles that collapse.
-fn weld_vertices(points: &mut [Point3<f64>], triangles: &mut Vec<[u32; 3]>) {
-    if points.is_empty() {
-        return;
-    }
-    let (lo, hi) = points
-        .iter()
-        .fold((points[0], points[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
-    let tolerance = 1e-6 * (hi - lo).norm().max(f64::MIN_POSITIVE);
-    let mut order: Vec<usize> = (0..points.len()).collect();
-    order.sort_by(|&a, &b| points[a].x.total_cmp(&points[b].x));
-    let mut representative: Vec<u32> = (0..points.len() as u32).collect();
-    for (k, &i) in order.iter().enumerate() {
-        for &j in order[..k].iter().rev() {
-            if points[i].x - points[j].x > tolerance {
-                break;
-            }
-            if (points[i] - points[j]).norm() <= tolerance {
-                representative[i] = representative[j];
-                break;
-            }
-        }
-    }
-    for t in triangles.iter_mut() {
-        *t = t.map(|i| representative[i as usize]);
-    }
-    triangles.retain(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0]);
 }
