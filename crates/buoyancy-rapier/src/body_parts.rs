@@ -4,7 +4,7 @@ use buoyancy_core::controller::Part;
 use rapier3d::prelude::{ColliderHandle, ColliderSet, RigidBodyHandle, RigidBodySet};
 
 use crate::convert::pose_to_nalgebra;
-use crate::shapes::{MeshCache, append_meshes};
+use crate::shapes::{ShapeError, ShapeMeshes};
 use crate::{Error, FloatOptions, FloatingColliders};
 
 /// The meshes of the colliders of `body` that `options` selects, each listed once.
@@ -13,7 +13,7 @@ pub(crate) fn mesh_colliders(
     bodies: &RigidBodySet,
     colliders: &ColliderSet,
     options: &FloatOptions,
-    cache: &mut MeshCache,
+    cache: &mut ShapeMeshes,
 ) -> Result<Vec<Part>, Error> {
     let rigid_body = bodies.get(body).ok_or(Error::UnknownBody(body))?;
     let selected: Vec<ColliderHandle> = match &options.colliders {
@@ -42,14 +42,23 @@ pub(crate) fn mesh_colliders(
                 });
             }
         };
-        append_meshes(
-            handle,
-            collider.shared_shape(),
-            shape_to_body,
-            options.subdivisions,
-            cache,
-            &mut parts,
-        )?;
+        cache
+            .append(
+                collider.shared_shape(),
+                shape_to_body,
+                options.subdivisions,
+                &mut parts,
+            )
+            .map_err(|e| match e {
+                ShapeError::Unsupported(shape) => Error::UnsupportedShape {
+                    collider: handle,
+                    shape,
+                },
+                ShapeError::Mesh(source) => Error::Mesh {
+                    collider: handle,
+                    source,
+                },
+            })?;
     }
     if parts.is_empty() {
         return Err(Error::NothingToFloat(body));

@@ -13,7 +13,7 @@ use rapier3d::prelude::{ColliderSet, RigidBody, RigidBodyHandle, RigidBodySet, R
 
 use crate::body_parts::mesh_colliders;
 use crate::convert::{point_to_nalgebra, pose_from_nalgebra, pose_to_nalgebra, vector_to_nalgebra};
-use crate::shapes::MeshCache;
+use crate::shapes::ShapeMeshes;
 use crate::{Error, FloatOptions};
 
 /// The bodies that float in one rapier world, and their water: rapier's glue over the core's
@@ -31,7 +31,7 @@ pub struct FloatingBodies {
     states: Vec<BodyState>,
     commands: Vec<Command>,
     /// One mesh per rapier shape, shared by the bodies whose colliders share it.
-    meshes: MeshCache,
+    meshes: ShapeMeshes,
 }
 
 impl FloatingBodies {
@@ -60,7 +60,7 @@ impl FloatingBodies {
             index: HashMap::new(),
             states: Vec::new(),
             commands: Vec::new(),
-            meshes: MeshCache::default(),
+            meshes: ShapeMeshes::default(),
         })
     }
 

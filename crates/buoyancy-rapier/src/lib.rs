@@ -124,3 +124,4 @@ pub use buoyancy_core::controller::{DampingResolution, FloatReport, Outcome, Res
 pub use error::Error;
 pub use floating_bodies::FloatingBodies;
 pub use options::{FloatOptions, FloatingColliders};
+pub use shapes::{ShapeError, ShapeMeshes};
