@@ -3,8 +3,8 @@
 use std::collections::HashMap;
 
 use buoyancy_core::controller::{
-    BodyOptions, BodyState, Command, Controller, DampingResolution, FloatReport, Motion, Rest,
-    Settings, SharedSurface,
+    BodyOptions, BodyState, Command, Controller, DampingResolution, FloatReport, Motion, Part,
+    Rest, Settings, SharedSurface,
 };
 use buoyancy_core::nalgebra::Matrix3;
 use buoyancy_core::{DampingCoefficients, Mesh, Method, Pose, Water};
@@ -160,6 +160,40 @@ impl FloatingBodies {
     ) -> Result<(), Error> {
         self.meshes.prune();
         let parts = mesh_colliders(body, bodies, colliders, &options, &mut self.meshes)?;
+        self.hold(body, parts, &options)
+    }
+
+    /// Makes `body` float with `parts` (closed meshes placed on the body by their
+    /// `shape_to_body`, in the frame of `RigidBody::position`) instead of its colliders, with
+    /// the overrides of `options` (its collider selection and subdivisions are not used).
+    /// Registering a body again replaces its meshes and options.
+    ///
+    /// # Errors
+    /// [`Error::UnknownBody`] if `body` is not in `bodies`, [`Error::NothingToFloat`] for no
+    /// parts, [`Error::Core`] for overrides the core rejects.
+    pub fn register_parts(
+        &mut self,
+        body: RigidBodyHandle,
+        bodies: &RigidBodySet,
+        parts: Vec<Part>,
+        options: FloatOptions,
+    ) -> Result<(), Error> {
+        if !bodies.contains(body) {
+            return Err(Error::UnknownBody(body));
+        }
+        if parts.is_empty() {
+            return Err(Error::NothingToFloat(body));
+        }
+        self.hold(body, parts, &options)
+    }
+
+    /// Adds `body` to the controller with `parts`, or replaces its parts.
+    fn hold(
+        &mut self,
+        body: RigidBodyHandle,
+        parts: Vec<Part>,
+        options: &FloatOptions,
+    ) -> Result<(), Error> {
         let overrides = BodyOptions {
             method: options.method,
             water: options.water,

@@ -69,3 +69,49 @@ fn angular_damping_of_a_body_split_into_parts() {
         "whole cube {a:?}, split {b:?}"
     );
 }
+
+/// A body registered with parts of its own (not its colliders) floats with them: a 1 m cube of
+/// 500 kg given as one part floats half submerged, as its cuboid collider would; no part, or a
+/// body the set does not hold, is an error.
+#[test]
+fn explicit_parts_float_instead_of_the_colliders() {
+    use buoyancy_core::controller::Part;
+    use buoyancy_core::{Mesh, Pose, shape};
+    use std::sync::Arc;
+
+    let mut pool = Pool::new();
+    // A ball collider of the cube's mass: only the given cube floats.
+    let (h, _) = pool.world.insert(
+        RigidBodyBuilder::dynamic().can_sleep(false),
+        ColliderBuilder::ball(0.5).mass(500.0),
+    );
+    let (v, t) = shape::cube::<f64>(1).unwrap();
+    let part = Part {
+        mesh: Arc::new(Mesh::new(v, t).unwrap()),
+        shape_to_body: Pose::identity(),
+    };
+    pool.water
+        .register_parts(h, &pool.world.bodies, vec![part], FloatOptions::default())
+        .unwrap();
+    pool.run(20.0);
+    pool.assert_equilibrium(h, 1.0, "cube given as a part");
+    let report = pool.water.report(h).unwrap();
+    assert!(
+        (report.submerged_volume - 0.5).abs() < 2e-3,
+        "{}",
+        report.submerged_volume
+    );
+    assert_eq!(
+        pool.water
+            .register_parts(h, &pool.world.bodies, vec![], FloatOptions::default())
+            .unwrap_err(),
+        buoyancy_rapier::Error::NothingToFloat(h)
+    );
+    let gone = RigidBodyHandle::from_raw_parts(99, 0);
+    assert_eq!(
+        pool.water
+            .register_parts(gone, &pool.world.bodies, vec![], FloatOptions::default())
+            .unwrap_err(),
+        buoyancy_rapier::Error::UnknownBody(gone)
+    );
+}
