@@ -36,6 +36,9 @@ VPY=.venv-test/bin/python
 "$VPY" -m pip install --quiet 'mujoco>=3.3' 'gymnasium>=1.0' \
   || echo "note: mujoco could not be installed; tests/python/test_mujoco.py will skip"
 "$VPY" -m pip install --quiet .
+# MuJoCo renders offscreen (examples/mujoco_wave_energy.py's frame) through OSMesa unless told
+# otherwise; it reads MUJOCO_GL when it is first imported.
+export MUJOCO_GL="${MUJOCO_GL:-osmesa}"
 # From the tests folder's parent, so that `import buoyancy` is the installed wheel.
 "$VPY" -m pytest tests/python -q -p no:cacheprovider
 echo "== Python: the hand-written stubs (python/buoyancy/_core.pyi) against the compiled module"
