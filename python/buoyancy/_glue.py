@@ -1,14 +1,15 @@
 """What the engine adapters (:mod:`buoyancy.rapier`, :mod:`buoyancy.mujoco`) share: the water
-an engine's gravity implies, and the quaternions ``(x, y, z, w)`` that place parts on bodies."""
+an engine's gravity implies, the settings their controller holds, and the quaternions ``(x, y, z, w)`` that place parts on bodies."""
 
 from __future__ import annotations
 
 import math
+from typing import Literal
 
 import numpy as np
 import numpy.typing as npt
 
-from ._core import Water
+from ._core import Controller, DampingCoefficients, Water
 
 
 def water_for_gravity(
@@ -58,3 +59,48 @@ def rotation_matrix(q: npt.ArrayLike) -> np.ndarray:
             [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
         ]
     )
+
+
+class ControllerSettings:
+    """The settings of an adapter's :class:`~buoyancy.Controller` (``self._controller``), as
+    properties: those of the bodies registered without their own."""
+
+    _controller: Controller
+
+    @property
+    def water(self) -> Water:
+        """The water, with its waves if it has any (setting it keeps the waves' time)."""
+        return self._controller.water
+
+    @water.setter
+    def water(self, water: Water) -> None:
+        self._controller.water = water
+
+    @property
+    def method(self) -> str:
+        """The buoyancy method (its canonical name)."""
+        return self._controller.method
+
+    @method.setter
+    def method(self, method: str) -> None:
+        self._controller.method = method
+
+    @property
+    def damping(self) -> DampingCoefficients:
+        """The damping coefficients."""
+        return self._controller.damping
+
+    @damping.setter
+    def damping(self, damping: DampingCoefficients) -> None:
+        self._controller.damping = damping
+
+    @property
+    def damping_resolution(self) -> int | Literal["full"]:
+        """How finely the pressure drag is integrated: the most triangles of the reduced copy of
+        each mesh, or ``"full"``. Setting it builds the reduced copies it asks for (once per
+        mesh)."""
+        return self._controller.damping_resolution
+
+    @damping_resolution.setter
+    def damping_resolution(self, resolution: int | Literal["full"]) -> None:
+        self._controller.damping_resolution = resolution

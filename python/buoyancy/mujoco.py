@@ -89,7 +89,7 @@ import numpy.typing as npt
 
 from . import shapes
 from ._core import Controller, DampingCoefficients, Equilibrium, FloatReport, Mesh, Water, load
-from ._glue import quaternion_product, rotation_matrix, water_for_gravity
+from ._glue import ControllerSettings, quaternion_product, rotation_matrix, water_for_gravity
 
 try:
     import mujoco
@@ -306,7 +306,7 @@ def _parts_of(mesh: Any) -> Any:
     return mesh
 
 
-class FloatingBodies:
+class FloatingBodies(ControllerSettings):
     """The bodies that float in one MuJoCo model, and their water.
 
     Parameters
@@ -368,42 +368,6 @@ class FloatingBodies:
     def model(self) -> Any:
         """The ``mujoco.MjModel``."""
         return self._model
-
-    @property
-    def water(self) -> Water:
-        """The water, with its waves if it has any."""
-        return self._controller.water
-
-    @water.setter
-    def water(self, water: Water) -> None:
-        self._controller.water = water
-
-    @property
-    def method(self) -> str:
-        """The buoyancy method of the bodies without their own (its canonical name)."""
-        return self._controller.method
-
-    @method.setter
-    def method(self, method: str) -> None:
-        self._controller.method = method
-
-    @property
-    def damping(self) -> DampingCoefficients:
-        """The damping coefficients of the bodies without their own."""
-        return self._controller.damping
-
-    @damping.setter
-    def damping(self, damping: DampingCoefficients) -> None:
-        self._controller.damping = damping
-
-    @property
-    def damping_resolution(self) -> int | Literal["full"]:
-        """The most triangles of each mesh's reduced copy for the pressure drag, or ``"full"``."""
-        return self._controller.damping_resolution
-
-    @damping_resolution.setter
-    def damping_resolution(self, resolution: int | Literal["full"]) -> None:
-        self._controller.damping_resolution = resolution
 
     # --- bodies -------------------------------------------------------------------------------
 

@@ -105,7 +105,7 @@ from ._core import (
     _rapier_bodies,
     _world_inverse_inertias,
 )
-from ._glue import quaternion_product, rotation_matrix, water_for_gravity
+from ._glue import ControllerSettings, quaternion_product, rotation_matrix, water_for_gravity
 
 try:
     import rapier3d
@@ -304,7 +304,7 @@ class _Bodies:
         return self.arrays
 
 
-class FloatingBodies:
+class FloatingBodies(ControllerSettings):
     """The bodies that float in one rapier world, and their water.
 
     Parameters
@@ -363,15 +363,6 @@ class FloatingBodies:
     # --- settings -----------------------------------------------------------------------------
 
     @property
-    def water(self) -> Water:
-        """The world's water, with its waves if it has any (setting it keeps :attr:`time`)."""
-        return self._controller.water
-
-    @water.setter
-    def water(self, water: Water) -> None:
-        self._controller.water = water
-
-    @property
     def time(self) -> float:
         """The time of the water's waves, s: the bodies are floated on the surface at this time,
         and every :meth:`apply` advances it by its ``dt``. Starts at 0; settable (a finite
@@ -381,35 +372,6 @@ class FloatingBodies:
     @time.setter
     def time(self, time: float) -> None:
         self._controller.time = time
-
-    @property
-    def method(self) -> str:
-        """The world's buoyancy method (its canonical name)."""
-        return self._controller.method
-
-    @method.setter
-    def method(self, method: str) -> None:
-        self._controller.method = method
-
-    @property
-    def damping(self) -> DampingCoefficients:
-        """The world's damping coefficients."""
-        return self._controller.damping
-
-    @damping.setter
-    def damping(self, damping: DampingCoefficients) -> None:
-        self._controller.damping = damping
-
-    @property
-    def damping_resolution(self) -> int | Literal["full"]:
-        """How finely the pressure drag of the bodies without their own is integrated: the most
-        triangles of the reduced copy of each mesh, or ``"full"``. Setting it builds the reduced
-        copies it asks for (once per mesh)."""
-        return self._controller.damping_resolution
-
-    @damping_resolution.setter
-    def damping_resolution(self, resolution: int | Literal["full"]) -> None:
-        self._controller.damping_resolution = resolution
 
     # --- bodies -------------------------------------------------------------------------------
 

@@ -160,19 +160,8 @@ fn float_avian_bodies(
         books.failed.remove(&entity);
     }
     water.follow_gravity(gravity.map_or(Vec3::ZERO, |g| g.0));
-    let still = match water.core() {
-        Ok(still) => {
-            books.water_error = None;
-            still
-        }
-        Err(e) => {
-            let message = format!("buoyancy: the Water resource is invalid ({e}); nothing floats");
-            if books.water_error.as_deref() != Some(&message) {
-                error!("{message}");
-            }
-            books.water_error = Some(message);
-            return;
-        }
+    let Some(still) = water.core_or_log(&mut books.water_error) else {
+        return;
     };
     // New and changed floating entities.
     for (entity, settings, has_body, body_colliders, mut report) in &mut floating {

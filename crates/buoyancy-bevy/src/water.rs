@@ -132,6 +132,29 @@ impl Water {
         )
     }
 
+    /// The core's still water, or `None` after logging why not: once per distinct error, which
+    /// `last_error` remembers (cleared when the water is valid again).
+    pub(crate) fn core_or_log(
+        &self,
+        last_error: &mut Option<String>,
+    ) -> Option<buoyancy_core::Water<f64>> {
+        match self.core() {
+            Ok(still) => {
+                *last_error = None;
+                Some(still)
+            }
+            Err(e) => {
+                let message =
+                    format!("buoyancy: the Water resource is invalid ({e}); nothing floats");
+                if last_error.as_deref() != Some(&message) {
+                    bevy::log::error!("{message}");
+                }
+                *last_error = Some(message);
+                None
+            }
+        }
+    }
+
     /// Takes the up direction and `g` from the backend's gravity (`+y`, 9.81 m/s² without one).
     pub(crate) fn follow_gravity(&mut self, gravity: Vec3) {
         let g = gravity.length();
