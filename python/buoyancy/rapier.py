@@ -18,7 +18,7 @@ Example (a 1 m crate of density 500 kg/m³ floats half submerged)::
 
     world = rapier3d.PhysicsWorld(gravity=(0.0, -9.81, 0.0))
     crate = world.add_body(
-        rapier3d.RigidBody.dynamic().translation((0.0, 1.0, 0.0)).can_sleep(False),
+        rapier3d.RigidBody.dynamic().translation((0.0, 1.0, 0.0)),
         [rapier3d.Collider.cuboid(0.5, 0.5, 0.5).density(500.0)],
     )
     water = FloatingBodies.for_world(world)        # fresh water, surface y = 0, y up
@@ -45,13 +45,13 @@ Waves
         print(water.time)                          # ≈ 10.0 s
 
 Sleeping
-    rapier puts a body to sleep once it has moved slower than its activation thresholds
-    (0.4 m/s by default) for 2 s, and a floating body bobbing gently does so before it reaches
-    equilibrium: asleep, it stays where it was (within a few mm for a 1 m body). Build floating
-    bodies with ``can_sleep(False)``, or lower their ``activation`` thresholds, when the
-    equilibrium matters. ``apply`` wakes a sleeping body when its force or torque has changed by
-    more than 0.1 % (of the force plus the body's weight) since it was last awake, so that slow
-    changes, a rising tide, add up.
+    rapier puts a body to sleep once it has moved slower than its activation thresholds for a
+    while, which a floating body still bobbing by millimetres does.
+    ``apply`` wakes a sleeping body when its force or torque has changed by more than 0.1 % (of
+    the force plus the body's weight) since it was last awake, so that slow changes, a rising
+    tide, add up; and when it fell asleep out of balance (its net force above 0.1 % of its
+    weight, or its net torque above that times its size), so that it settles on, unless it was
+    woken for that at the same pose before (the ground or a joint holds it).
 
 Forces the application adds itself
     rapier keeps the forces and torques added to a body (``add_force``, ``add_torque``) until
@@ -523,6 +523,8 @@ class FloatingBodies(ControllerSettings):
                 rb.add_force(force, wake_up)
             if torque != zero:
                 rb.add_torque(torque, wake_up)
+            if wake_up and force == zero and torque == zero:
+                rb.wake_up()  # asleep out of balance: woken with nothing to add
 
     def place_at_rest(self, body: Hashable, bodies: Any, colliders: Any) -> Equilibrium:
         """Places ``body`` where it floats at rest in the still water (the still level under

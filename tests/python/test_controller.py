@@ -182,6 +182,24 @@ def test_waking() -> None:
     assert wake[0] and 0.001 * WEIGHT < f[0, 1] * k
 
 
+def test_a_body_asleep_out_of_balance_is_woken_once_per_pose() -> None:
+    engine = Engine(cubes(1), 1)
+    high = np.array([[0.0, 0.01, 0.0]])  # 1 cm above its rest: 98 N short of its weight
+    engine.step(positions=high)  # awake: the engine holds the buoyancy
+    asleep = np.array([True])
+    add, _, wake = engine.step(positions=high, sleeping=asleep)
+    # Nothing changed, nothing to add; but 98 N out of balance (over 0.1 % of 4905 N): woken.
+    assert not add.any() and wake.tolist() == [True]
+    # Asleep again at the same pose: something holds it there (the ground): left asleep.
+    _, _, wake = engine.step(positions=high, sleeping=asleep)
+    assert wake.tolist() == [False]
+    # In balance, a sleeping body is not woken.
+    engine = Engine(cubes(1), 1)
+    engine.step()
+    _, _, wake = engine.step(sleeping=asleep)
+    assert wake.tolist() == [False]
+
+
 def test_bodies_of_several_parts_and_per_body_settings() -> None:
     cube = buoyancy.shapes.cube()
     controller = buoyancy.Controller()

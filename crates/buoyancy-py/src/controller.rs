@@ -382,7 +382,9 @@ fn core_parts(py: Python<'_>, parts: &mut [GivenPart], bodies: &[Vec<GivenPart>]
 ///
 /// Sleeping bodies
 ///     are woken (``wake``) when the controller's force or torque on them has changed by more
-///     than 0.1 % (of the force plus the body's weight) since they were last awake.
+///     than 0.1 % (of the force plus the body's weight) since they were last awake, and when
+///     they fell asleep out of balance (net force above 0.1 % of the weight, or net torque
+///     above that times the body's size), unless woken for that at the same pose before.
 ///
 /// Stability
 ///     The damping is semi-implicit: the damping wrench ``W`` of the model is applied as
@@ -444,8 +446,8 @@ fn core_parts(py: Python<'_>, parts: &mut [GivenPart], bodies: &[Vec<GivenPart>]
 /// ...     dynamic=np.array([True]),
 /// ...     sleeping=np.array([False]),
 /// ... )
-/// >>> add_force.tolist(), wake.tolist()                  # add this to the engine's force
-/// ([[0.0, 4905.0, 0.0]], [True])
+/// >>> add_force.tolist(), wake.tolist()    # add this to the engine's force; it is awake
+/// ([[0.0, 4905.0, 0.0]], [False])
 /// >>> report = controller.report(cube)
 /// >>> report.outcome, report.submerged_volume
 /// ('applied', 0.5)
@@ -964,8 +966,8 @@ impl PyController {
     ///     Torque to add, about the center of mass, N·m.
     /// wake : ndarray, shape (N,), bool
     ///     Whether to wake each body if it sleeps: the force or torque changed by more than
-    ///     0.1 % since it was last awake (only ever True when something is added; the flag to
-    ///     give the engine's ``add_force``).
+    ///     0.1 % since it was last awake, or it sleeps out of balance (then possibly with
+    ///     nothing to add: wake it whenever this is True).
     ///
     /// Raises
     /// ------

@@ -339,6 +339,9 @@ impl FloatingBodies {
                 let rb = &mut bodies[handle];
                 rb.add_force(Vector::from(command.add_force), command.wake);
                 rb.add_torque(Vector::from(command.add_torque), command.wake);
+            } else if command.wake {
+                // Asleep out of balance: woken with nothing to add.
+                bodies[handle].wake_up(true);
             }
         }
     }

@@ -12,8 +12,7 @@
 //!
 //! let mut world = PhysicsWorld::default(); // gravity (0, −9.81, 0): water y up, level 0
 //! let (boat, _) = world.insert(
-//!     // can_sleep(false): rapier would put the slowly settling box to sleep short of its rest.
-//!     RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 1.0, 0.0)).can_sleep(false),
+//!     RigidBodyBuilder::dynamic().translation(Vector::new(0.0, 1.0, 0.0)),
 //!     ColliderBuilder::cuboid(1.0, 0.1, 0.25).density(500.0), // 2 × 0.2 × 0.5 m, 100 kg
 //! );
 //! let mut water = FloatingBodies::new(world.gravity)?;
@@ -32,10 +31,11 @@
 //! # Sleeping bodies
 //! A sleeping body is woken when the adapter's force or torque on it has changed by more than
 //! 0.1 % (of the force plus the body's weight) since it was last awake, so that slow changes,
-//! a rising tide, add up. A body that rapier puts to sleep before it has settled stays where it
-//! fell asleep: the box above, allowed to sleep, is asleep within 4 s, 0.7 mm above its rest
-//! height, its buoyancy 974 N against 981 N of weight. Bodies that must settle exactly are
-//! built with `can_sleep(false)`.
+//! a rising tide, add up. rapier puts a body to sleep once it has moved slower than its activation
+//! thresholds for a while (by default 0.05 m/s for 0.5 s), which a floating body still heaving by millimetres does: a body asleep *out of balance*
+//! (its net force above 0.1 % of its weight, or its net torque above that times its size) is
+//! woken, and settles on, unless it was woken for that at the same pose before (the ground or a
+//! joint holds it). See [the controller](buoyancy_core::controller#sleeping-bodies).
 //!
 //! # Forces, not impulses
 //! The adapter applies buoyancy and damping as forces that rapier keeps, and adds or takes back

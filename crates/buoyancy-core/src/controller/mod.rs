@@ -29,9 +29,20 @@
 //!   taken back is exactly what was added.
 //!
 //! # Sleeping bodies
-//! A sleeping body is woken when the controller's force or torque on it has changed by more
-//! than 0.1 % (of the force plus the body's weight; the torque also by that force times the
-//! body's size) since it was last awake, so that slow changes, a rising tide, add up.
+//! A sleeping body is woken when the buoyancy on it (force or torque; a body at rest feels no
+//! damping) has changed by more than 0.1 % (of the force plus the body's weight; the torque
+//! also by that force times the body's size) since it was last awake, so that slow changes, a
+//! rising tide, add up. An awake body is never "woken": that would restart the engine's count
+//! towards sleep.
+//!
+//! It is woken too when the engine put it to sleep *out of balance*: its net force (the
+//! controller's share, the application's own forces and its weight) above 0.1 % of its weight,
+//! or its net torque above that times its size. Engines put a body to sleep when it has moved
+//! slowly for a while (rapier, by default: below 0.05 m/s for 0.5 s), which a floating body still heaving by
+//! a few millimetres does; woken, it settles on. A body woken for that at the same pose before
+//! (to 1e-4 of its size and 1e-4 rad) is left asleep: something the controller does not see
+//! holds it there, the ground or a joint. Such a wake adds nothing: an adapter wakes the body
+//! whenever [`Command::wake`] says so.
 //!
 //! # Bodies at rest
 //! In still water, a body whose state, settings, step and share are exactly those of its last
@@ -446,19 +457,31 @@ impl Controller {
                     }),
             };
             body.report = evaluation.report(state.center_of_mass);
-            let (force, torque) = match evaluation {
+            let zero = nalgebra::Vector3::zeros();
+            let (share, buoyancy) = match evaluation {
                 Evaluation::Inactive => {
                     *command = Command::default();
                     return;
                 }
                 // Not finite: the share goes back to zero.
-                Evaluation::NotFinite => (nalgebra::Vector3::zeros(), nalgebra::Vector3::zeros()),
-                Evaluation::Floating { force, torque, .. } => (force, torque),
+                Evaluation::NotFinite => ((zero, zero), (zero, zero)),
+                Evaluation::Floating {
+                    force,
+                    torque,
+                    report,
+                } => (
+                    (force, torque),
+                    (
+                        report.buoyancy_force.cast::<f32>(),
+                        report.buoyancy_torque.cast::<f32>(),
+                    ),
+                ),
             };
-            let gravity = resolved.water.gravity() as f32;
+            let gravity =
+                (resolved.water.normal().into_inner() * -resolved.water.gravity()).cast::<f32>();
             *command = body
                 .share
-                .hold(state, force, torque, gravity, body.size() as f32);
+                .hold(state, share, buoyancy, gravity, body.size() as f32);
         };
         #[cfg(feature = "rayon")]
         {

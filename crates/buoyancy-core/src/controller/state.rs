@@ -56,7 +56,8 @@ pub struct Command {
     pub add_force: Vector3<f32>,
     /// Torque to add, N·m, world frame.
     pub add_torque: Vector3<f32>,
-    /// Whether to wake the body (when it sleeps).
+    /// Whether to wake the body (when it sleeps), also when there is nothing to add (a body
+    /// asleep out of balance: see [the controller](super#sleeping-bodies)).
     pub wake: bool,
 }
 
