@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Runs every test of the project: unit, integration, property and doc tests of all crates,
-# with and without the optional features; then builds the Python wheel into a fresh virtual
-# environment (.venv-test/) with `pip install .` (and rapier3d and mujoco, for buoyancy.rapier and
-# buoyancy.mujoco) and runs
-# its pytest suite (tests/python), checks the stubs against the compiled module (mypy's stubtest)
-# and lints the Python code (ruff).
+# with and without the optional features; the Bevy plugin's on both backends (and its harbor
+# example, headless); then builds the Python wheel into a fresh virtual environment
+# (.venv-test/) with `pip install .` (and rapier3d and mujoco, for buoyancy.rapier and
+# buoyancy.mujoco) and runs its pytest suite (tests/python), checks the stubs against the
+# compiled module (mypy's stubtest) and lints the Python code (ruff).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo test --workspace --all-features
@@ -15,6 +15,17 @@ cargo test -p buoyancy-core --no-default-features --lib --test controller
 # Builds the benchmarks (never runs them) with the tests' profile and dependencies; `cargo test`
 # above has built the examples.
 cargo test --workspace --all-features --benches --no-run
+
+echo "== Bevy plugin: crates/buoyancy-bevy (its own workspace, rustc 1.97.1), both backends"
+# Its tests (the same scenarios on bevy_rapier3d and avian3d, headless), then the harbor example
+# headless on each backend: it exits 1 if a body is more than 1 cm off its theoretical draft.
+rustup toolchain install 1.97.1 --profile minimal --component rustfmt,clippy >/dev/null
+(
+  cd crates/buoyancy-bevy
+  cargo test --features rapier,avian
+  cargo run --features rapier,avian --example harbor -- --headless --backend rapier
+  cargo run --features rapier,avian --example harbor -- --headless --backend avian
+)
 
 echo "== Python: pip install . into a fresh .venv-test, then pytest, the stubs and the linter"
 PYTHON="${PYTHON:-python3}"
