@@ -117,7 +117,7 @@ fn setup(
     commands.spawn((
         DirectionalLight {
             illuminance: 9000.0,
-            shadows_enabled: false,
+            shadow_maps_enabled: false,
             ..default()
         },
         Transform::from_xyz(4.0, 10.0, 6.0).looking_at(Vec3::ZERO, Vec3::Y),
@@ -139,7 +139,7 @@ fn setup(
     commands.spawn((
         Text::new(""),
         TextFont {
-            font_size: 15.0,
+            font_size: FontSize::Px(15.0),
             ..default()
         },
         TextColor(Color::srgb(0.05, 0.1, 0.15)),
