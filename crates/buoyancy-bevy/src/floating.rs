@@ -165,11 +165,19 @@ impl Outline {
         Outline { area, hull }
     }
 
-    /// The lowest hull vertex along `up` at `pose` (world frame).
+    /// The lowest hull vertex along `up` at `pose` (world frame): the vertex `p` (body frame)
+    /// of least `(R⁻¹ up) · p`, `R` the pose's rotation, so that only `up` and the one vertex
+    /// found are transformed.
     pub fn lowest(&self, pose: &Pose<f64>, up: &Vector3<f64>) -> Option<Point3<f64>> {
-        self.hull
-            .iter()
-            .map(|p| pose * p)
-            .min_by(|a, b| up.dot(&a.coords).total_cmp(&up.dot(&b.coords)))
+        let local_up = pose.rotation.inverse_transform_vector(up);
+        let (first, rest) = self.hull.split_first()?;
+        let mut lowest = (first, local_up.dot(&first.coords));
+        for p in rest {
+            let height = local_up.dot(&p.coords);
+            if height < lowest.1 {
+                lowest = (p, height);
+            }
+        }
+        Some(pose * lowest.0)
     }
 }
