@@ -20,8 +20,11 @@
 
 mod scene;
 
-#[cfg(feature = "render")]
+#[cfg(feature = "display")]
 mod render;
+
+#[cfg(all(feature = "web", target_arch = "wasm32"))]
+mod web;
 
 use std::process::ExitCode;
 use std::time::Duration;
@@ -90,10 +93,10 @@ fn parse_args() -> Result<Args, String> {
         } else {
             Backend::Avian
         },
-        headless: !cfg!(feature = "render"),
+        headless: !cfg!(feature = "display"),
         frames: 1200,
         sea: Sea {
-            significant_height: if cfg!(feature = "render") { 0.8 } else { 0.0 },
+            significant_height: if cfg!(feature = "display") { 0.8 } else { 0.0 },
             peak_period: 5.0,
             direction_degrees: 30.0,
             seed: 7,
@@ -168,13 +171,27 @@ fn parse_args() -> Result<Args, String> {
     Ok(args)
 }
 
-/// Adds the backend's physics (at 60 Hz when `fixed`) and the buoyancy plugin.
+/// Adds the backend's physics (at 60 Hz when `fixed`) and the buoyancy plugin. In a web page,
+/// bevy_rapier steps in the fixed schedule at 60 Hz of the page's clock, as many steps a frame
+/// as the frame lasted.
 fn add_physics(app: &mut App, backend: Backend, fixed: bool) {
     match backend {
         Backend::Rapier => {
             #[cfg(feature = "rapier")]
             {
                 use bevy_rapier3d::prelude::*;
+                if cfg!(target_arch = "wasm32") {
+                    app.add_plugins(
+                        RapierPhysicsPlugin::<NoUserData>::default().in_fixed_schedule(),
+                    )
+                    .insert_resource(Time::<Fixed>::from_hz(60.0))
+                    .insert_resource(TimestepMode::Fixed {
+                        dt: 1.0 / 60.0,
+                        substeps: 1,
+                    })
+                    .add_plugins(BuoyancyPlugin::in_schedule(FixedPostUpdate));
+                    return;
+                }
                 app.add_plugins(RapierPhysicsPlugin::<NoUserData>::default());
                 if fixed {
                     app.insert_resource(TimestepMode::Fixed {
@@ -451,26 +468,43 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    #[cfg(all(feature = "web", target_arch = "wasm32"))]
+    let (bunny, args) = (
+        web::bunny_obj(),
+        Args {
+            sea: web::initial_sea(args.sea),
+            ..args
+        },
+    );
+    #[cfg(not(all(feature = "web", target_arch = "wasm32")))]
+    let bunny = buoyancy_samples::mesh_path("bunny.obj").and_then(|path| {
+        std::fs::read_to_string(&path)
+            .map_err(|e| eprintln!("harbor: cannot read {}: {e}", path.display()))
+            .ok()
+    });
     let density = 1000.0;
-    let (bodies, waves) =
-        match scene::harbor(density).and_then(|b| Ok((b, args.sea.waves(density)?))) {
-            Ok(scene) => scene,
-            Err(e) => {
-                eprintln!("harbor: {e}");
-                return ExitCode::FAILURE;
-            }
-        };
+    let (bodies, waves) = match scene::harbor(density, bunny.as_deref())
+        .and_then(|b| Ok((b, args.sea.waves(density)?)))
+    {
+        Ok(scene) => scene,
+        Err(e) => {
+            eprintln!("harbor: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
     let mut water = Water::default();
     water.density = density;
     water.set_waves(waves.map(|w| std::sync::Arc::new(w) as _));
     if args.headless {
         return run_headless(&args, bodies, water);
     }
-    #[cfg(feature = "render")]
+    #[cfg(feature = "display")]
     {
         let mut app = App::new();
         render::add(&mut app, args.sea);
         add_physics(&mut app, args.backend, false);
+        #[cfg(all(feature = "web", target_arch = "wasm32"))]
+        web::add(&mut app);
         app.insert_resource(water)
             .insert_resource(Harbor {
                 bodies,
@@ -480,7 +514,7 @@ fn main() -> ExitCode {
         app.run();
         ExitCode::SUCCESS
     }
-    #[cfg(not(feature = "render"))]
+    #[cfg(not(feature = "display"))]
     {
         eprintln!("harbor: the window needs the `render` feature; or pass --headless");
         ExitCode::from(2)

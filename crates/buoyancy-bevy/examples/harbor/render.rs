@@ -18,7 +18,7 @@ const WATER_CELLS: usize = 96;
 
 /// The sea the keys set; the waves are rebuilt when it changes.
 #[derive(Resource, Clone, Copy)]
-struct SeaControls(Sea);
+pub struct SeaControls(pub Sea);
 
 /// The water's mesh.
 #[derive(Resource)]
@@ -110,10 +110,16 @@ fn setup(
     mut meshes: ResMut<Assets<Mesh>>,
     mut materials: ResMut<Assets<StandardMaterial>>,
 ) {
-    commands.spawn((
+    let mut camera = commands.spawn((
         Camera3d::default(),
         Transform::from_xyz(-9.0, 7.0, 13.0).looking_at(Vec3::new(0.0, 0.0, 0.0), Vec3::Y),
     ));
+    // The page goes without the tone-mapping tables (megabytes of wasm): a tone curve without
+    // them.
+    #[cfg(not(feature = "render"))]
+    camera.insert(bevy::core_pipeline::tonemapping::Tonemapping::AcesFitted);
+    #[cfg(feature = "render")]
+    let _ = &mut camera;
     commands.spawn((
         DirectionalLight {
             illuminance: 9000.0,
@@ -212,7 +218,7 @@ fn steer_the_sea(
 
 /// Makes `sea` the water's waves if it differs from the controls' (logging an error, and
 /// keeping the old waves, if it cannot be built).
-fn set_sea(sea: Sea, controls: &mut SeaControls, water: &mut Water) {
+pub fn set_sea(sea: Sea, controls: &mut SeaControls, water: &mut Water) {
     if sea == controls.0 {
         return;
     }

@@ -57,11 +57,17 @@ pub struct Body {
     pub theory: &'static str,
     pub start: Transform,
     /// sRGB, 0 to 1 (drawn with the `render` feature).
-    #[cfg_attr(not(feature = "render"), allow(dead_code))]
+    #[cfg_attr(not(feature = "display"), allow(dead_code))]
     pub color: [f32; 3],
 }
 
 impl Body {
+    /// The body's mean density, kg/m³: its mass over its mesh's volume.
+    #[cfg_attr(not(feature = "web"), allow(dead_code))]
+    pub fn mean_density(&self) -> f64 {
+        self.mass_kg / self.mesh.volume()
+    }
+
     /// The [`Floating`] component of this body.
     pub fn floating(&self) -> Floating {
         if self.explicit_mesh {
@@ -154,9 +160,9 @@ fn mesh_body(
     })
 }
 
-/// The harbor in water of `density`: crates of three densities, a buoy, a hull and, if the
-/// sample meshes are found, the bunny.
-pub fn harbor(density: f64) -> Result<Vec<Body>, buoyancy_core::Error> {
+/// The harbor in water of `density`: crates of three densities, a buoy, a hull and, given its
+/// OBJ text, the bunny.
+pub fn harbor(density: f64, bunny_obj: Option<&str>) -> Result<Vec<Body>, buoyancy_core::Error> {
     let mut bodies = Vec::new();
     // Crates 1.2 m × 0.5 m × 0.8 m, floating flat: draft = h·ρ_crate/ρ.
     let half = Vec3::new(0.6, 0.25, 0.4);
@@ -231,8 +237,8 @@ pub fn harbor(density: f64) -> Result<Vec<Body>, buoyancy_core::Error> {
     )?);
     // The Stanford bunny, scaled to 1.2 m, density 400 with its center of gravity a tenth of
     // its height below its centroid (ballast keeps it upright).
-    if let Some(path) = buoyancy_samples::mesh_path("bunny.obj") {
-        let raw = closed(buoyancy_core::io::load(&path))?;
+    if let Some(text) = bunny_obj {
+        let raw = closed(buoyancy_core::io::parse_obj(text))?;
         let (low, high) = bounds(&raw);
         let scale = 1.2 / (high - low).max();
         let centroid = raw.centroid();

@@ -1,0 +1,235 @@
+//! The harbor in a web page (`wasm32-unknown-unknown`, feature `web`): the page's controls in,
+//! a report out.
+//!
+//! The page (`web/index.html`) fetches the bunny's OBJ into `window.harborBunny` before the
+//! module starts, and keeps its sliders in `window.harborControls`:
+//! `{hs, tp, direction, densities: [kg/m³ per body]}`, read here every frame. Once a second the
+//! harbor writes `window.harborReport` and logs it on the console as one line, `HARBOR {json}`:
+//! the physics time, the mean frame time and the physics step's share of it over the last
+//! second, and each body's height, draft and theoretical draft in calm water.
+
+use bevy::platform::time::Instant;
+use bevy::prelude::*;
+use buoyancy_bevy::{FloatReport, Water};
+use js_sys::Reflect;
+use wasm_bindgen::JsValue;
+
+use crate::render::{SeaControls, set_sea};
+use crate::scene::HarborBody;
+use crate::{Harbor, Sea};
+
+/// The bunny's OBJ text the page fetched, if it did.
+pub fn bunny_obj() -> Option<String> {
+    Reflect::get(&js_sys::global(), &JsValue::from_str("harborBunny"))
+        .ok()
+        .and_then(|v| v.as_string())
+}
+
+/// The sea of `window.harborControls` (the page sets it from its query string), over `sea`.
+pub fn initial_sea(mut sea: Sea) -> Sea {
+    let read = |key: &str| control(key);
+    if let Some(hs) = read("hs") {
+        sea.significant_height = hs.clamp(0.0, 3.0);
+    }
+    if let Some(tp) = read("tp") {
+        sea.peak_period = tp.clamp(2.0, 12.0);
+    }
+    if let Some(direction) = read("direction") {
+        sea.direction_degrees = direction;
+    }
+    sea
+}
+
+/// A finite number of `window.harborControls`.
+fn control(key: &str) -> Option<f64> {
+    let controls = Reflect::get(&js_sys::global(), &JsValue::from_str("harborControls")).ok()?;
+    Reflect::get(&controls, &JsValue::from_str(key))
+        .ok()?
+        .as_f64()
+        .filter(|v| v.is_finite())
+}
+
+/// The densities of `window.harborControls.densities`, kg/m³, by body.
+fn densities() -> Vec<Option<f64>> {
+    let Some(list) = Reflect::get(&js_sys::global(), &JsValue::from_str("harborControls"))
+        .ok()
+        .and_then(|c| Reflect::get(&c, &JsValue::from_str("densities")).ok())
+        .filter(|l| l.is_object())
+    else {
+        return Vec::new();
+    };
+    let array = js_sys::Array::from(&list);
+    array
+        .iter()
+        .map(|v| v.as_f64().filter(|d| d.is_finite() && *d > 0.0))
+        .collect()
+}
+
+/// What the report averages over a second.
+#[derive(Resource, Default)]
+struct Timing {
+    since: Option<Instant>,
+    frames: u32,
+    frame_seconds: f64,
+    physics_seconds: f64,
+    physics_started: Option<Instant>,
+}
+
+/// The densities the bodies have now, kg/m³ (the page's, once applied).
+#[derive(Resource, Default)]
+struct Densities(Vec<f64>);
+
+/// Adds the page's controls and report to the windowed harbor.
+pub fn add(app: &mut App) {
+    use bevy_rapier3d::prelude::PhysicsSet;
+    app.init_resource::<Timing>()
+        .init_resource::<Densities>()
+        .add_systems(Update, (follow_the_sea, follow_the_densities))
+        .add_systems(
+            FixedPostUpdate,
+            (
+                start_physics_clock.before(PhysicsSet::SyncBackend),
+                stop_physics_clock.after(PhysicsSet::Writeback),
+            ),
+        )
+        .add_systems(Last, report);
+}
+
+fn follow_the_sea(mut controls: ResMut<SeaControls>, mut water: ResMut<Water>) {
+    let mut sea = controls.0;
+    if let Some(hs) = control("hs") {
+        sea.significant_height = hs.clamp(0.0, 3.0);
+    }
+    if let Some(tp) = control("tp") {
+        sea.peak_period = tp.clamp(2.0, 12.0);
+    }
+    if let Some(direction) = control("direction") {
+        sea.direction_degrees = direction;
+    }
+    set_sea(sea, &mut controls, &mut water);
+}
+
+/// Gives each body the page's density: its mass (and inertia) scaled, its center of mass kept.
+fn follow_the_densities(
+    harbor: Res<Harbor>,
+    mut current: ResMut<Densities>,
+    mut bodies: Query<(
+        &HarborBody,
+        &mut bevy_rapier3d::prelude::ColliderMassProperties,
+    )>,
+) {
+    use crate::scene::BodyMass;
+    use bevy_rapier3d::prelude::{ColliderMassProperties, MassProperties};
+    if current.0.is_empty() {
+        current.0 = harbor.bodies.iter().map(|b| b.mean_density()).collect();
+    }
+    let wanted = densities();
+    for (HarborBody(i), mut mass) in &mut bodies {
+        let Some(Some(density)) = wanted.get(*i).copied() else {
+            continue;
+        };
+        if density == current.0[*i] {
+            continue;
+        }
+        let body = &harbor.bodies[*i];
+        let factor = (density / body.mean_density()) as f32;
+        *mass = match body.mass {
+            BodyMass::Density(d) => ColliderMassProperties::Density(d * factor),
+            BodyMass::Given {
+                mass,
+                center,
+                inertia,
+            } => ColliderMassProperties::MassProperties(MassProperties {
+                local_center_of_mass: center,
+                mass: mass * factor,
+                principal_inertia_local_frame: Quat::IDENTITY,
+                principal_inertia: inertia * factor,
+            }),
+        };
+        current.0[*i] = density;
+    }
+}
+
+fn start_physics_clock(mut timing: ResMut<Timing>) {
+    timing.physics_started = Some(Instant::now());
+}
+
+fn stop_physics_clock(mut timing: ResMut<Timing>) {
+    if let Some(started) = timing.physics_started.take() {
+        timing.physics_seconds += started.elapsed().as_secs_f64();
+    }
+}
+
+/// Once a second: `window.harborReport` and the console line `HARBOR {json}`.
+fn report(
+    mut timing: ResMut<Timing>,
+    time: Res<Time>,
+    water: Res<Water>,
+    harbor: Res<Harbor>,
+    densities: Res<Densities>,
+    controls: Res<SeaControls>,
+    bodies: Query<(&HarborBody, &Transform, &FloatReport)>,
+) {
+    timing.frames += 1;
+    timing.frame_seconds += time.delta_secs_f64();
+    let since = *timing.since.get_or_insert_with(Instant::now);
+    if since.elapsed().as_secs_f64() < 1.0 {
+        return;
+    }
+    let frames = f64::from(timing.frames.max(1));
+    let mut rows: Vec<(usize, String)> = bodies
+        .iter()
+        .map(|(HarborBody(i), transform, report)| {
+            let body = &harbor.bodies[*i];
+            let density = densities.0.get(*i).copied().unwrap_or(body.mean_density());
+            // The theory holds for the scene's own densities.
+            let theory = if (density - body.mean_density()).abs() <= 1e-9 * density {
+                format!("{:.5}", body.draft)
+            } else {
+                "null".into()
+            };
+            (
+                *i,
+                format!(
+                    "{{\"name\":\"{}\",\"height\":{},\"draft\":{},\"theory\":{theory},\"density\":{:.1},\"error\":{}}}",
+                    body.name,
+                    json_number(f64::from(transform.translation.y)),
+                    json_number(report.draft),
+                    density,
+                    report
+                        .error
+                        .as_ref()
+                        .map_or("null".into(), |e| format!("{e:?}")),
+                ),
+            )
+        })
+        .collect();
+    rows.sort_by_key(|(i, _)| *i);
+    let line = format!(
+        "{{\"time\":{:.3},\"hs\":{:.2},\"frame_ms\":{:.2},\"physics_ms\":{:.3},\"bodies\":[{}]}}",
+        water.time(),
+        controls.0.significant_height,
+        1e3 * timing.frame_seconds / frames,
+        1e3 * timing.physics_seconds / frames,
+        rows.into_iter()
+            .map(|(_, r)| r)
+            .collect::<Vec<_>>()
+            .join(",")
+    );
+    let _ = Reflect::set(
+        &js_sys::global(),
+        &JsValue::from_str("harborReport"),
+        &JsValue::from_str(&line),
+    );
+    web_sys::console::log_1(&JsValue::from_str(&format!("HARBOR {line}")));
+    *timing = Timing::default();
+}
+
+/// A JSON number, or `null` when not finite (the check then fails on it).
+fn json_number(value: f64) -> String {
+    if value.is_finite() {
+        format!("{value:.5}")
+    } else {
+        "null".into()
+    }
+}
