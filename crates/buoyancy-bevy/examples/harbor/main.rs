@@ -472,7 +472,7 @@ fn main() -> ExitCode {
     let (bunny, args) = (
         web::bunny_obj(),
         Args {
-            sea: web::initial_sea(args.sea),
+            sea: web::page_sea(args.sea),
             ..args
         },
     );

@@ -25,16 +25,16 @@ pub fn bunny_obj() -> Option<String> {
         .and_then(|v| v.as_string())
 }
 
-/// The sea of `window.harborControls` (the page sets it from its query string), over `sea`.
-pub fn initial_sea(mut sea: Sea) -> Sea {
-    let read = |key: &str| control(key);
-    if let Some(hs) = read("hs") {
+/// The sea of `window.harborControls` (the page sets it from its query string and its sliders),
+/// over `sea`.
+pub fn page_sea(mut sea: Sea) -> Sea {
+    if let Some(hs) = control("hs") {
         sea.significant_height = hs.clamp(0.0, 3.0);
     }
-    if let Some(tp) = read("tp") {
+    if let Some(tp) = control("tp") {
         sea.peak_period = tp.clamp(2.0, 12.0);
     }
-    if let Some(direction) = read("direction") {
+    if let Some(direction) = control("direction") {
         sea.direction_degrees = direction;
     }
     sea
@@ -96,16 +96,7 @@ pub fn add(app: &mut App) {
 }
 
 fn follow_the_sea(mut controls: ResMut<SeaControls>, mut water: ResMut<Water>) {
-    let mut sea = controls.0;
-    if let Some(hs) = control("hs") {
-        sea.significant_height = hs.clamp(0.0, 3.0);
-    }
-    if let Some(tp) = control("tp") {
-        sea.peak_period = tp.clamp(2.0, 12.0);
-    }
-    if let Some(direction) = control("direction") {
-        sea.direction_degrees = direction;
-    }
+    let sea = page_sea(controls.0);
     set_sea(sea, &mut controls, &mut water);
 }
 
