@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Runs every test of the project: unit, integration, property and doc tests of all crates,
 # with and without the optional features; the Bevy plugin's on both backends (and its harbor
-# example, headless); then builds the Python wheel into a fresh virtual environment
-# (.venv-test/) with `pip install .` (and rapier3d and mujoco, for buoyancy.rapier and
-# buoyancy.mujoco) and runs its pytest suite (tests/python), checks the stubs against the
+# example, headless, then in a web page in headless Chromium); then builds the Python wheel
+# into a fresh virtual environment (.venv-test/) with `pip install .` (and rapier3d and mujoco,
+# for buoyancy.rapier and buoyancy.mujoco) and runs its pytest suite (tests/python), checks the stubs against the
 # compiled module (mypy's stubtest) and lints the Python code (ruff).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,6 +26,12 @@ rustup toolchain install 1.97.1 --profile minimal --component rustfmt,clippy >/d
   cargo run --features rapier,avian --example harbor -- --headless --backend rapier
   cargo run --features rapier,avian --example harbor -- --headless --backend avian
 )
+
+echo "== the harbor in a web page: wasm32, headless Chromium"
+# Builds the page (installing the wasm32 target, wasm-bindgen-cli, wasm-opt and chromium if
+# missing), opens it in calm water and fails if a body is off its draft by more than 1 cm or the
+# console logs an error.
+bash scripts/web.sh
 
 echo "== Python: pip install . into a fresh .venv-test, then pytest, the stubs and the linter"
 PYTHON="${PYTHON:-python3}"
@@ -55,5 +61,5 @@ export MUJOCO_GL="${MUJOCO_GL:-osmesa}"
 echo "== Python: the hand-written stubs (python/buoyancy/_core.pyi) against the compiled module"
 "$VPY" -m mypy.stubtest buoyancy._core
 echo "== Python: ruff (configured in pyproject.toml)"
-"$VPY" -m ruff check python tests/python benches examples
-"$VPY" -m ruff format --check python tests/python benches examples
+"$VPY" -m ruff check python tests/python benches examples scripts
+"$VPY" -m ruff format --check python tests/python benches examples scripts

@@ -189,7 +189,7 @@ fn add_physics(app: &mut App, backend: Backend, fixed: bool) {
                         dt: 1.0 / 60.0,
                         substeps: 1,
                     })
-                    .add_plugins(BuoyancyPlugin::in_schedule(FixedPostUpdate));
+                    .add_plugins(BuoyancyPlugin::in_schedule(FixedUpdate));
                     return;
                 }
                 app.add_plugins(RapierPhysicsPlugin::<NoUserData>::default());

@@ -5,7 +5,9 @@
 use bevy::asset::RenderAssetUsages;
 use bevy::mesh::{Indices, PrimitiveTopology};
 use bevy::prelude::*;
-use buoyancy_bevy::{FloatReport, Water};
+#[cfg(feature = "render")]
+use buoyancy_bevy::FloatReport;
+use buoyancy_bevy::Water;
 use buoyancy_core::Mesh as CoreMesh;
 
 use crate::scene::HarborBody;
@@ -24,7 +26,8 @@ pub struct SeaControls(pub Sea);
 #[derive(Resource)]
 struct WaterMesh(Handle<Mesh>);
 
-/// The overlay's text.
+/// The overlay's text (the page writes its own, in HTML).
+#[cfg(feature = "render")]
 #[derive(Component)]
 struct Overlay;
 
@@ -48,6 +51,7 @@ pub fn add(app: &mut App, sea: Sea) {
             dress_bodies,
             steer_the_sea,
             draw_the_water,
+            #[cfg(feature = "render")]
             write_the_overlay,
         ),
     );
@@ -142,6 +146,7 @@ fn setup(
         Transform::default(),
     ));
     commands.insert_resource(WaterMesh(water));
+    #[cfg(feature = "render")]
     commands.spawn((
         Text::new(""),
         TextFont {
@@ -252,6 +257,7 @@ fn draw_the_water(water: Res<Water>, handle: Res<WaterMesh>, mut meshes: ResMut<
     mesh.insert_attribute(Mesh::ATTRIBUTE_NORMAL, normals);
 }
 
+#[cfg(feature = "render")]
 fn write_the_overlay(
     controls: Res<SeaControls>,
     water: Res<Water>,

@@ -5,8 +5,9 @@
 //! module starts, and keeps its sliders in `window.harborControls`:
 //! `{hs, tp, direction, densities: [kg/m³ per body]}`, read here every frame. Once a second the
 //! harbor writes `window.harborReport` and logs it on the console as one line, `HARBOR {json}`:
-//! the physics time, the mean frame time and the physics step's share of it over the last
-//! second, and each body's height, draft and theoretical draft in calm water.
+//! the physics time; over the last second, the mean frame time (the page's clock), the time a
+//! frame of its fixed 60 Hz steps (bevy_rapier's with the buoyancy plugin's), their number and
+//! their mean; and each body's height, draft and theoretical draft in calm water.
 
 use bevy::platform::time::Instant;
 use bevy::prelude::*;
@@ -70,9 +71,9 @@ fn densities() -> Vec<Option<f64>> {
 struct Timing {
     since: Option<Instant>,
     frames: u32,
-    frame_seconds: f64,
     physics_seconds: f64,
     physics_started: Option<Instant>,
+    steps: u32,
 }
 
 /// The densities the bodies have now, kg/m³ (the page's, once applied).
@@ -80,18 +81,23 @@ struct Timing {
 struct Densities(Vec<f64>);
 
 /// Adds the page's controls and report to the windowed harbor.
+///
+/// The physics clock runs around the frame's fixed steps (`RunFixedMainLoop`): bevy_rapier's
+/// steps with the buoyancy plugin's, as many as the frame lasted at 60 Hz. One clock a frame
+/// rather than one a step, as the page's clock ticks in 0.1 ms.
 pub fn add(app: &mut App) {
-    use bevy_rapier3d::prelude::PhysicsSet;
+    use bevy::app::{RunFixedMainLoop, RunFixedMainLoopSystems};
     app.init_resource::<Timing>()
         .init_resource::<Densities>()
         .add_systems(Update, (follow_the_sea, follow_the_densities))
         .add_systems(
-            FixedPostUpdate,
+            RunFixedMainLoop,
             (
-                start_physics_clock.before(PhysicsSet::SyncBackend),
-                stop_physics_clock.after(PhysicsSet::Writeback),
+                start_physics_clock.in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+                stop_physics_clock.in_set(RunFixedMainLoopSystems::AfterFixedMainLoop),
             ),
         )
+        .add_systems(FixedUpdate, count_the_step)
         .add_systems(Last, report);
 }
 
@@ -141,6 +147,10 @@ fn follow_the_densities(
     }
 }
 
+fn count_the_step(mut timing: ResMut<Timing>) {
+    timing.steps += 1;
+}
+
 fn start_physics_clock(mut timing: ResMut<Timing>) {
     timing.physics_started = Some(Instant::now());
 }
@@ -154,7 +164,6 @@ fn stop_physics_clock(mut timing: ResMut<Timing>) {
 /// Once a second: `window.harborReport` and the console line `HARBOR {json}`.
 fn report(
     mut timing: ResMut<Timing>,
-    time: Res<Time>,
     water: Res<Water>,
     harbor: Res<Harbor>,
     densities: Res<Densities>,
@@ -162,9 +171,10 @@ fn report(
     bodies: Query<(&HarborBody, &Transform, &FloatReport)>,
 ) {
     timing.frames += 1;
-    timing.frame_seconds += time.delta_secs_f64();
     let since = *timing.since.get_or_insert_with(Instant::now);
-    if since.elapsed().as_secs_f64() < 1.0 {
+    // The page's clock, not Bevy's delta (which stops at 0.25 s a frame).
+    let wall_seconds = since.elapsed().as_secs_f64();
+    if wall_seconds < 1.0 {
         return;
     }
     let frames = f64::from(timing.frames.max(1));
@@ -197,11 +207,13 @@ fn report(
         .collect();
     rows.sort_by_key(|(i, _)| *i);
     let line = format!(
-        "{{\"time\":{:.3},\"hs\":{:.2},\"frame_ms\":{:.2},\"physics_ms\":{:.3},\"bodies\":[{}]}}",
+        "{{\"time\":{:.3},\"hs\":{:.2},\"frame_ms\":{:.2},\"physics_ms\":{:.3},\"steps\":{},\"step_ms\":{:.3},\"bodies\":[{}]}}",
         water.time(),
         controls.0.significant_height,
-        1e3 * timing.frame_seconds / frames,
+        1e3 * wall_seconds / frames,
         1e3 * timing.physics_seconds / frames,
+        timing.steps,
+        1e3 * timing.physics_seconds / f64::from(timing.steps.max(1)),
         rows.into_iter()
             .map(|(_, r)| r)
             .collect::<Vec<_>>()
