@@ -713,6 +713,9 @@ class GzCurve:
     @property
     def angle_of_vanishing_stability(self) -> float | None: ...
     @property
+    def positive_stability(self) -> Literal["vanishes", "beyond", "none"]:
+        """Where positive stability ends: at the vanishing angle, beyond the curve, or nowhere."""
+    @property
     def flooding_angle(self) -> float | None:
         """Degrees: the first heel at which the water reaches an opening (the curve stops)."""
     def __len__(self) -> int: ...

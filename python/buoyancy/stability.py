@@ -14,6 +14,13 @@ Conventions: SI units, angles in degrees; ``--up`` is the mesh axis that points 
 is upright (the water's normal), ``--axis`` its longitudinal axis (heel is about it). A positive
 heel is right-handed about the longitudinal axis: with x forward and z up, it puts starboard
 (-y) down. ``GZ`` is positive when it rights the hull.
+
+Exit status: 0 when the hull floats upright in a stable equilibrium with a range of positive
+stability; 1 when the results were written but a warning on stderr says otherwise (the
+equilibrium is not stable, the hull floats capsized, past 90° of heel, or ``GZ`` is not
+positive at any heel); 2 for an error, before anything is written (bad arguments, a file that
+cannot be read, an output folder that cannot be written, a body that does not float, a solve
+that does not converge).
 """
 
 from __future__ import annotations
@@ -21,6 +28,7 @@ from __future__ import annotations
 import argparse
 import csv
 import math
+import os
 import pathlib
 import sys
 from collections.abc import Sequence
@@ -109,20 +117,48 @@ def print_table(table: HydrostaticTable) -> None:
 
 
 def print_curve(curve: GzCurve) -> None:
-    vanishing = curve.angle_of_vanishing_stability
     last = float(curve.heel[-1])
     print(f"GZ curve: {len(curve)} heels from {curve.heel[0]:g}° to {last:g}°")
     print(f"  maximum GZ {curve.max_gz:.4f} m at {curve.angle_of_max_gz:.1f}°")
-    print(
-        "  angle of vanishing stability "
-        + (f"{vanishing:.1f}°" if vanishing is not None else f"beyond {last:g}° (GZ stays positive)")
-    )
+    vanishing = {
+        "vanishes": f"{curve.angle_of_vanishing_stability or 0.0:.1f}°",
+        "beyond": f"beyond {last:g}° (GZ stays positive)",
+        "none": "none: GZ is not positive at any heel of the curve",
+    }[curve.positive_stability]
+    print(f"  angle of vanishing stability {vanishing}")
     if curve.flooding_angle is not None:
         print(f"  the water reaches an opening at {curve.flooding_angle:g}°: the curve stops there")
     for upto in (30.0, 40.0):
         if upto <= last:
             print(f"  area under GZ to {upto:g}°: {curve.area_up_to(upto):.4f} m·rad")
     print(f"  area under GZ to {last:g}°: {curve.area:.4f} m·rad")
+
+
+def warnings(rest: Equilibrium, curve: GzCurve) -> list[str]:
+    """What makes the exit status 1: the hull does not float upright and stable."""
+    found = []
+    if not rest.stable:
+        found.append("the equilibrium is not stable (neutral, or the solver's restarts ran out)")
+    if abs(rest.heel) > 90.0:
+        found.append(f"the hull floats capsized, at {rest.heel:.1f}° of heel")
+    if curve.positive_stability == "none":
+        found.append("GZ is not positive at any heel: no range of positive stability")
+    if not math.isfinite(curve.max_gz):
+        found.append("the GZ curve has no finite maximum")
+    return found
+
+
+def output_folder(path: pathlib.Path) -> str | None:
+    """Makes the output folder; what is wrong with it, if it cannot be written."""
+    if path.exists() and not path.is_dir():
+        return f"--out {path}: is a file, not a folder"
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        return f"--out {path}: cannot make the folder ({error.strerror or error})"
+    if not os.access(path, os.W_OK | os.X_OK):
+        return f"--out {path}: the folder is not writable"
+    return None
 
 
 def write_csv(path: pathlib.Path, header: Sequence[str], rows: np.ndarray) -> None:
@@ -165,7 +201,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         prog="python -m buoyancy.stability",
         description=(__doc__ or "").split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter,
-        epilog="Example: python -m buoyancy.stability hull.stl --mass 1200 --cog 0 0 0.3 --up z --out out/",
+        epilog=(
+            "Example: python -m buoyancy.stability hull.stl --mass 1200 --cog 0 0 0.3 --up z --out out/\n\n"
+            "Exit status: 0 floats upright, stable, with positive GZ; 1 results written with a warning "
+            "(not stable, capsized, or no positive GZ); 2 an error, before anything is written."
+        ),
     )
     parser.add_argument("mesh", type=pathlib.Path, help="STL, OBJ or PLY file of the hull (metres)")
     parser.add_argument("--mass", type=float, required=True, help="mass of the loaded hull, kg")
@@ -196,6 +236,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.error("--heel-step must be positive and --heel-max in (0, 180]")
     if args.rows < 1:
         parser.error("--rows must be at least 1")
+    problem = output_folder(args.out)
+    if problem is not None:
+        print(f"error: {problem}", file=sys.stderr)
+        return 2
     try:
         mesh = load(args.mesh, close_openings=args.close_openings)
         water = Water(density=args.density, gravity=args.gravity, normal=up)
@@ -206,7 +250,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         drafts = table_drafts(rest.draft, table_height(mesh, up), args.rows)
         table = mesh.hydrostatic_table(drafts, water=water, axis=axis, center_of_mass=args.cog)
     except (OSError, ValueError, RuntimeError) as error:
-        print(f"error: {error}", file=sys.stderr)
+        message = str(error)
+        if "open edges" in message and not args.close_openings:
+            message += (
+                "\nIf the hull is open on purpose (no deck), run with --close-openings: it closes each "
+                "planar opening with a lid, and the GZ curve stops where the water reaches one."
+            )
+        print(f"error: {message}", file=sys.stderr)
         return 2
 
     print(f"{args.mesh}: {mesh.n_triangles:,} triangles, volume {mesh.volume:.6g} m³")
@@ -220,7 +270,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     print()
     print_curve(curve)
 
-    args.out.mkdir(parents=True, exist_ok=True)
     gz_csv = args.out / "gz_curve.csv"
     write_csv(gz_csv, ["heel_deg", "gz_m", "trim_deg", "draft_m"], np.c_[curve.heel, curve.gz, curve.trim, curve.draft])
     table_csv = args.out / "hydrostatic_table.csv"
@@ -240,9 +289,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         print("note: matplotlib is not installed; gz_curve.png not written (pip install buoyancy[plot])")
     print()
     print("wrote " + ", ".join(str(p) for p in written))
-    if not math.isfinite(curve.max_gz):
-        return 1
-    return 0
+    found = warnings(rest, curve)
+    for warning in found:
+        print(f"warning: {warning}", file=sys.stderr)
+    return 1 if found else 0
 
 
 if __name__ == "__main__":

@@ -240,6 +240,18 @@ def test_overflow_is_an_error_not_infinity() -> None:
         shapes.cube().buoyancy_batch([(0, 5, 0), (0, -1e300, 0)], None, water=water)
 
 
+@pytest.mark.parametrize("scale", [1e300, 1e-300])
+def test_a_huge_or_tiny_normal_is_normalised(scale: float) -> None:
+    """A normal of 1e300 once normalised to zero (its squared norm overflowed), and the water
+    gave no force; 1e-300 was called the zero vector."""
+    water = buoyancy.Water(normal=(0, scale, scale))
+    np.testing.assert_allclose(water.normal, [0, 0.5**0.5, 0.5**0.5], atol=1e-15)
+    unit = buoyancy.Water(normal=(0, 1, 1))
+    force = shapes.cube().buoyancy((0, 0, 0), water=water).force
+    np.testing.assert_array_equal(force, shapes.cube().buoyancy((0, 0, 0), water=unit).force)
+    assert np.linalg.norm(force) > 0
+
+
 GOOD = np.zeros((3, 3))
 QUATS = np.tile([0.0, 0.0, 0.0, 1.0], (3, 1))
 

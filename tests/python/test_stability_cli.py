@@ -111,3 +111,69 @@ def test_runs_as_a_module(tmp_path: pathlib.Path) -> None:
     )
     assert result.returncode == 0, result.stderr
     assert "Hydrostatic table" in result.stdout and "GZ curve: 4 heels" in result.stdout
+
+
+def write_open_box(path: pathlib.Path) -> pathlib.Path:
+    """The box without its deck (the triangles of its top face dropped), as OBJ."""
+    box = shapes.cube(2).scaled((LENGTH, BEAM, DEPTH)).translated((0, 0, DEPTH / 2))
+    top = box.vertices[box.faces].min(axis=1)[:, 2] > DEPTH - 1e-9
+    lines = [f"v {x:.17g} {y:.17g} {z:.17g}" for x, y, z in box.vertices]
+    lines += [f"f {a + 1} {b + 1} {c + 1}" for a, b, c in box.faces[~top]]
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def test_a_hull_without_positive_stability_says_so(tmp_path: pathlib.Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """G far above the metacenter: GZ negative at every heel to 90°. Once printed as
+    "beyond 90° (GZ stays positive)" with exit 0; now "none" and exit 1, with warnings."""
+    mesh = write_box(tmp_path / "box.obj")
+    mass = RHO * LENGTH * BEAM * 0.5
+    code = main([str(mesh), "--mass", str(mass), "--cog", "0", "0", "3", "--out", str(tmp_path / "o")])
+    captured = capsys.readouterr()
+    assert code == 1, captured
+    assert "angle of vanishing stability none: GZ is not positive at any heel" in captured.out
+    assert "stays positive" not in captured.out
+    assert "warning: GZ is not positive at any heel" in captured.err
+    # The equilibrium found is the box upside down (it floats capsized): said, too.
+    assert "warning: the hull floats capsized" in captured.err
+    assert (tmp_path / "o" / "gz_curve.csv").exists()
+
+
+def test_positive_stability_beyond_the_curve(tmp_path: pathlib.Path, capsys: pytest.CaptureFixture[str]) -> None:
+    mesh = write_box(tmp_path / "box.obj")
+    mass = RHO * LENGTH * BEAM * 0.25
+    args = [str(mesh), "--mass", str(mass), "--cog", "0", "0", "0.4", "--heel-max", "10", "--out", str(tmp_path)]
+    assert main(args) == 0
+    assert "angle of vanishing stability beyond 10° (GZ stays positive)" in capsys.readouterr().out
+
+
+def test_neutral_buoyancy_does_not_float(tmp_path: pathlib.Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Within 1e-12 of neutral buoyancy: once a draft of 2.79 m for a box 1 m high, exit 0."""
+    mesh = write_box(tmp_path / "box.obj")
+    neutral = RHO * LENGTH * BEAM * DEPTH * (1 - 1e-12)
+    assert main([str(mesh), "--mass", repr(neutral), "--cog", "0", "0", "0.5", "--out", str(tmp_path)]) == 2
+    assert "does not float" in capsys.readouterr().err
+
+
+def test_out_is_checked_before_the_work(tmp_path: pathlib.Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """`--out` naming a file, or a folder that cannot be made: `error:` and exit 2, before the
+    solve (once a traceback and exit 1 after it)."""
+    mesh = write_box(tmp_path / "box.obj")
+    args = [str(mesh), "--mass", "2050", "--cog", "0", "0", "0.4", "--out"]
+    assert main([*args, str(mesh)]) == 2
+    captured = capsys.readouterr()
+    assert f"error: --out {mesh}: is a file, not a folder" in captured.err
+    assert "Equilibrium" not in captured.out
+    assert main([*args, str(mesh / "below")]) == 2
+    captured = capsys.readouterr()
+    assert "error: --out" in captured.err and "cannot make the folder" in captured.err
+    assert "Equilibrium" not in captured.out
+
+
+def test_an_open_hull_is_pointed_at_close_openings(tmp_path: pathlib.Path, capsys: pytest.CaptureFixture[str]) -> None:
+    mesh = write_open_box(tmp_path / "open.obj")
+    args = [str(mesh), "--mass", "2050", "--cog", "0", "0", "0.4", "--heel-max", "20", "--out", str(tmp_path)]
+    assert main(args) == 2
+    assert "run with --close-openings" in capsys.readouterr().err
+    assert main([*args, "--close-openings"]) == 0
+    assert "--close-openings" not in capsys.readouterr().err

@@ -32,7 +32,8 @@ pub enum Error {
         reason: &'static str,
     },
     /// The body is too heavy to float: its mass is at least the mass of the water its whole
-    /// volume displaces ([`Mesh::equilibrium`](crate::Mesh::equilibrium)).
+    /// volume displaces, or within the solver's tolerance of it, where it hangs submerged at
+    /// any depth ([`Mesh::equilibrium`](crate::Mesh::equilibrium)).
     TooHeavyToFloat {
         /// The mass given, kg.
         mass: f64,
@@ -222,9 +223,10 @@ impl fmt::Display for Error {
             Error::InvalidMass { reason } => write!(f, "invalid mass: {reason}"),
             Error::TooHeavyToFloat { mass, capacity } => write!(
                 f,
-                "the body does not float: its mass, {mass:.6e} kg, is at least the mass of \
-                 water its whole volume displaces, {capacity:.6e} kg; lighten it, or check the \
-                 mesh's units and the water's density"
+                "the body does not float: its mass, {mass:.6e} kg, is at least (or within the \
+                 solver's tolerance of) the mass of water its whole volume displaces, \
+                 {capacity:.6e} kg; lighten it, or check the mesh's units and the water's \
+                 density"
             ),
             Error::NoConvergence {
                 iterations,

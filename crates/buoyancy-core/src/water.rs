@@ -85,17 +85,16 @@ impl<T: Real> Water<T> {
                 reason: "has a NaN or infinite component",
             });
         }
-        let normal = Unit::try_new(normal, T::zero()).ok_or(Error::InvalidWater {
-            parameter: "normal",
-            reason: "is the zero vector; give the up direction, e.g. (0, 1, 0)",
-        })?;
-        if !normal.iter().all(|c| c.is_finite()) {
-            // The squared norm overflowed (components around 1e154 in f64).
+        // Divided by its largest component first, so that the norm neither overflows (a
+        // normal of 1e300 once became the zero vector) nor underflows (1e-300).
+        let largest = normal.amax();
+        if largest == T::zero() {
             return Err(Error::InvalidWater {
                 parameter: "normal",
-                reason: "is too large to normalise",
+                reason: "is the zero vector; give the up direction, e.g. (0, 1, 0)",
             });
         }
+        let normal = Unit::new_normalize(normal / largest);
         if !level.is_finite() {
             return Err(Error::InvalidWater {
                 parameter: "level",

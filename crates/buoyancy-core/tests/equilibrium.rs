@@ -566,10 +566,22 @@ fn errors_are_typed() {
         }
         other => panic!("{other:?}"),
     }
-    assert!(matches!(
-        hull.equilibrium(&water, &loading(g, capacity)),
-        Err(Error::TooHeavyToFloat { .. })
-    ));
+    // At neutral buoyancy, and within the tolerance of it, no draft (once: a draft above the
+    // hull's height with a residual of 1e-15).
+    for mass in [capacity, capacity * (1.0 - 1e-12), capacity * (1.0 - 1e-15)] {
+        assert!(
+            matches!(
+                hull.equilibrium(&water, &loading(g, mass)),
+                Err(Error::TooHeavyToFloat { .. })
+            ),
+            "mass {mass} of capacity {capacity}"
+        );
+    }
+    // Just outside the tolerance it floats, within the hull.
+    let nearly = hull
+        .equilibrium(&water, &loading(g, capacity * (1.0 - 1e-8)))
+        .unwrap();
+    assert!(nearly.draft <= BOX.1, "{} > {}", nearly.draft, BOX.1);
     for l in [LoadingCondition::new(g).unwrap(), loading(g, 0.0)] {
         match hull.equilibrium(&water, &l) {
             Err(e @ Error::InvalidMass { .. }) => assert!(e.to_string().contains("mass"), "{e}"),
@@ -736,5 +748,78 @@ fn every_test_mesh_comes_to_rest_with_b_under_g() {
     eprintln!(
         "{count} equilibria: worst relative residual or lever {worst:.1e}, at most {most} \
          iterations"
+    );
+}
+
+/// `positive_stability` tells the two curves without an angle of vanishing stability apart: one
+/// still positive at its last heel, one never positive (a center of gravity far above the
+/// metacenter).
+#[test]
+fn positive_stability_tells_beyond_from_never() {
+    use buoyancy_core::hydrostatics::PositiveStability;
+    let hull = test_box();
+    let water = Water::default();
+    let mass = box_mass(0.75);
+    let curve = |kg: f64, last_deg: f64| {
+        let heels: Vec<f64> = (0..=10)
+            .map(|i| (last_deg * i as f64 / 10.0).to_radians())
+            .collect();
+        hull.gz_curve(
+            &water,
+            &loading(Point3::new(0.0, kg - 0.5 * BOX.1, 0.0), mass),
+            &heels,
+            Trim::Free,
+            &EquilibriumOptions::default(),
+        )
+        .unwrap()
+    };
+    // Low G, heels to 10°: GZ positive throughout.
+    let low = curve(0.3, 10.0);
+    assert!(low.points[1..].iter().all(|p| p.gz > 0.0));
+    assert_eq!(low.vanishing_angle(), None);
+    assert_eq!(low.positive_stability(), PositiveStability::BeyondLastHeel);
+    // G just above the box's center (KG 0.78 m, KM 0.82 m upright and inverted), heels to
+    // 180°: stable upright and inverted, so GZ vanishes between, at `vanishing_angle`.
+    let full = curve(0.78, 180.0);
+    let vanishing = full.vanishing_angle().unwrap();
+    assert!(vanishing > 0.0 && vanishing < PI, "{vanishing}");
+    assert_eq!(
+        full.positive_stability(),
+        PositiveStability::VanishesAt(vanishing)
+    );
+    // G 6 m above the keel: GZ negative at every heel to 90°.
+    let high = curve(6.0, 90.0);
+    assert!(high.points[1..].iter().all(|p| p.gz < 0.0));
+    assert_eq!(high.vanishing_angle(), None);
+    assert_eq!(high.positive_stability(), PositiveStability::NotPositive);
+}
+
+/// A round-off GZ at the upright (4e-18 m, as a capsizing box's curve has) is zero, not the
+/// start of a range of stability that vanishes at 0° (once printed as such).
+#[test]
+fn round_off_at_the_upright_is_not_positive_stability() {
+    use buoyancy_core::hydrostatics::{GzCurve, GzPoint, PositiveStability};
+    let point = |heel_deg: f64, gz: f64| GzPoint {
+        heel: heel_deg.to_radians(),
+        trim: 0.0,
+        draft: 0.5,
+        gz,
+        pose: Pose::identity(),
+        residual: Vector3::zeros(),
+    };
+    let mut curve = GzCurve {
+        points: vec![point(0.0, 4.3e-18), point(2.5, -0.09), point(5.0, -0.18)],
+        flooding: None,
+        iterations: 0,
+    };
+    assert_eq!(curve.vanishing_angle(), None);
+    assert_eq!(curve.positive_stability(), PositiveStability::NotPositive);
+    // A real positive GZ at the first heel does vanish, between the points.
+    curve.points[0].gz = 0.09;
+    let vanishing = curve.vanishing_angle().unwrap().to_degrees();
+    assert!((vanishing - 1.25).abs() < 1e-12, "{vanishing}");
+    assert_eq!(
+        curve.positive_stability(),
+        PositiveStability::VanishesAt(vanishing.to_radians())
     );
 }

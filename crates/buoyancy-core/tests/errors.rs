@@ -437,6 +437,17 @@ fn water_parameters_are_checked() {
         .unwrap();
     assert_eq!(b.force, Vector3::zeros());
     assert_eq!(b.submerged_volume, 1.0);
+    // Normals whose squared norm overflows or underflows are normalised all the same (a normal
+    // of 1e300 once became the zero vector, and the water then gave no force).
+    let diagonal = Vector3::new(0.0, 1.0, 1.0).normalize();
+    for scale in [1e300, f64::MAX, 1e-300, 5e-324] {
+        let w = Water::new(1000.0, 9.81, Vector3::new(0.0, scale, scale), 0.0).unwrap();
+        assert!(
+            (w.normal().into_inner() - diagonal).norm() < 1e-15,
+            "{scale}: {:?}",
+            w.normal()
+        );
+    }
 }
 
 #[test]

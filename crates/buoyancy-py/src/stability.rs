@@ -349,7 +349,11 @@ impl PyEquilibrium {
 ///     The greatest ``GZ`` (m) and its heel (degrees), refined by a parabola.
 /// angle_of_vanishing_stability : float or None
 ///     The heel (degrees) past the upright where ``GZ`` falls back to zero, interpolated;
-///     ``None`` if it does not within the curve.
+///     ``None`` if it does not within the curve (``positive_stability`` says why).
+/// positive_stability : str
+///     Where the range of positive stability ends: ``"vanishes"`` (at
+///     ``angle_of_vanishing_stability``), ``"beyond"`` (``GZ`` is still positive at the last
+///     heel) or ``"none"`` (``GZ`` is not positive at any heel above zero).
 /// flooding_angle : float or None
 ///     For a hull whose openings were closed by lids: the first heel given (degrees) at which
 ///     the water reaches an opening; the curve stops before it. ``None`` otherwise.
@@ -362,6 +366,10 @@ impl PyEquilibrium {
 /// (True, 0.0)
 /// >>> round(curve.angle_of_max_gz), round(curve.max_gz, 2), curve.angle_of_vanishing_stability
 /// (40, 0.43, None)
+/// >>> curve.positive_stability
+/// 'beyond'
+/// >>> box.gz_curve(2000.0, (0, 3.0, 0), heel_deg=np.arange(0, 91, 5)).positive_stability
+/// 'none'
 #[pyclass(frozen, module = "buoyancy", name = "GzCurve")]
 pub struct PyGzCurve {
     inner: GzCurve<f64>,
@@ -458,6 +466,15 @@ impl PyGzCurve {
     #[getter]
     fn angle_of_vanishing_stability(&self) -> Option<f64> {
         self.inner.vanishing_angle().map(f64::to_degrees)
+    }
+    #[getter]
+    fn positive_stability(&self) -> &'static str {
+        use buoyancy_core::hydrostatics::PositiveStability;
+        match self.inner.positive_stability() {
+            PositiveStability::VanishesAt(_) => "vanishes",
+            PositiveStability::BeyondLastHeel => "beyond",
+            PositiveStability::NotPositive => "none",
+        }
     }
     fn __len__(&self) -> usize {
         self.inner.points.len()

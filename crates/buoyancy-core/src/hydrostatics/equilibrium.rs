@@ -209,7 +209,9 @@ impl<'a, T: Real> Solver<'a, T> {
             });
         }
         let capacity = water.density() * mesh.volume();
-        if mass >= capacity {
+        // Within the tolerance of neutral buoyancy, the volume residual is met fully submerged
+        // at any depth: no draft to find.
+        if mass >= capacity * (T::one() - options.tolerance) {
             return Err(Error::TooHeavyToFloat {
                 mass: mass.to_f64(),
                 capacity: capacity.to_f64(),
@@ -513,7 +515,8 @@ impl<T: Real> Mesh<T> {
     ///
     /// # Errors
     /// [`Error::InvalidMass`] if `loading` has no mass or a zero one;
-    /// [`Error::TooHeavyToFloat`] if `m ≥ ρ·V` of the whole mesh;
+    /// [`Error::TooHeavyToFloat`] if `m ≥ ρ·V·(1 − tolerance)` of the whole mesh (at neutral
+    /// buoyancy, within the tolerance, a submerged body has no draft);
     /// [`Error::InvalidWater`] for zero gravity; [`Error::InvalidPose`] for a start pose that
     /// is not finite; [`Error::InvalidLoading`] if the longitudinal axis is vertical at the
     /// start; [`Error::InvalidSolverOption`] for a tolerance outside `(0, 0.1)` or no

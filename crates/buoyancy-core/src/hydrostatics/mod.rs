@@ -210,7 +210,9 @@
 //!
 //! The residuals are relative: `(ρV − m)/m` and `M_G·e₁/(m·g·L)`, `M_G·e₂/(m·g·L)` with
 //! `L = 2·`[`Mesh::bounding_radius`](crate::Mesh::bounding_radius); the default tolerance is
-//! `ε^(2/3)`. A body with `m ≥ ρ·V_total` is [`Error::TooHeavyToFloat`](crate::Error), a
+//! `ε^(2/3)`. A body with `m ≥ ρ·V_total·(1 − tolerance)` is
+//! [`Error::TooHeavyToFloat`](crate::Error) (within the tolerance of neutral buoyancy it is
+//! submerged at any depth, without a draft), a
 //! solve that does not reach the tolerance [`Error::NoConvergence`](crate::Error), never a
 //! silent return.
 //!
@@ -272,7 +274,7 @@ mod waterplane;
 
 pub use equilibrium::{Equilibrium, EquilibriumOptions};
 pub use openings::Opening;
-pub use righting_arm::{GzCurve, GzPoint, Trim};
+pub use righting_arm::{GzCurve, GzPoint, PositiveStability, Trim};
 pub use stability::{Hydrostatics, LoadingCondition};
 pub use table::{HydrostaticRow, TableOptions};
 pub use waterplane::Waterplane;

@@ -42,6 +42,21 @@ pub struct GzPoint<T: Real> {
     pub residual: Vector3<T>,
 }
 
+/// Where the range of positive stability of a [`GzCurve`] ends
+/// ([`GzCurve::positive_stability`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PositiveStability<T: Real> {
+    /// GZ goes from positive to zero or negative at this heel, rad: the angle of vanishing
+    /// stability ([`GzCurve::vanishing_angle`]).
+    VanishesAt(T),
+    /// GZ is still positive at the curve's last heel: the angle of vanishing stability lies
+    /// beyond the curve.
+    BeyondLastHeel,
+    /// GZ is not positive at any heel of the curve above zero: no range of positive stability
+    /// (the body is unstable or neutral upright and its heels lie outside the curve).
+    NotPositive,
+}
+
 /// A righting-arm curve: see [`Mesh::gz_curve`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct GzCurve<T: Real> {
@@ -116,13 +131,42 @@ impl<T: Real> GzCurve<T> {
 
     /// The angle of vanishing stability, rad: the first heel above zero where GZ goes from
     /// positive to zero or negative, interpolated linearly between the points around it.
-    /// `None` if GZ does not vanish within the curve.
+    /// `None` if GZ does not vanish within the curve: either it stays positive or it is never
+    /// positive; [`positive_stability`](Self::positive_stability) tells which.
+    ///
+    /// Positive means above the round-off of the curve, `√ε·max |GZ|`: the `GZ` of `4e-18` m
+    /// an upright hull can have is zero here, not a range of stability.
     pub fn vanishing_angle(&self) -> Option<T> {
+        let positive = self.round_off();
         self.points.windows(2).find_map(|pair| {
             let (a, b) = (&pair[0], &pair[1]);
-            (b.heel > T::zero() && a.gz > T::zero() && b.gz <= T::zero())
+            (b.heel > T::zero() && a.gz > positive && b.gz <= positive)
                 .then(|| (a.heel + a.gz * (b.heel - a.heel) / (a.gz - b.gz)).max(T::zero()))
         })
+    }
+
+    /// Where the range of positive stability ends: at the angle of vanishing stability, beyond
+    /// the last heel (GZ positive there), or nowhere, when GZ is not positive at any heel
+    /// above zero.
+    pub fn positive_stability(&self) -> PositiveStability<T> {
+        if let Some(angle) = self.vanishing_angle() {
+            return PositiveStability::VanishesAt(angle);
+        }
+        match self.points.last() {
+            Some(last) if last.heel > T::zero() && last.gz > self.round_off() => {
+                PositiveStability::BeyondLastHeel
+            }
+            _ => PositiveStability::NotPositive,
+        }
+    }
+
+    /// The `GZ` below which a point counts as zero: `√ε` of the greatest `|GZ|`, m.
+    fn round_off(&self) -> T {
+        let largest = self
+            .points
+            .iter()
+            .fold(T::zero(), |largest, p| largest.max(p.gz.abs()));
+        T::default_epsilon().sqrt() * largest
     }
 }
 
