@@ -3,8 +3,8 @@
 # with and without the optional features; the Bevy plugin's on both backends (and its harbor
 # example, headless, then in a web page in headless Chromium); then builds the Python wheel
 # into a fresh virtual environment (.venv-test/) with `pip install .` (and rapier3d and mujoco,
-# for buoyancy.rapier and buoyancy.mujoco) and runs its pytest suite (tests/python), checks the stubs against the
-# compiled module (mypy's stubtest) and lints the Python code (ruff).
+# for buoyancy.rapier and buoyancy.mujoco) and runs its pytest suite (tests/python), checks the
+# stubs against the compiled module (mypy's stubtest) and lints the Python code (ruff).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo test --workspace --all-features
