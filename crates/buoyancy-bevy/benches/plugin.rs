@@ -34,10 +34,10 @@ use std::time::{Duration, Instant};
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use buoyancy_bevy::{BuoyancyPlugin, FloatReport, Floating, Water};
+use buoyancy_core::Mesh;
 use buoyancy_core::controller::{BodyOptions, BodyState, Command, Controller, Part, Settings};
 use buoyancy_core::nalgebra::{Point3, Vector3};
 use buoyancy_core::waves::{AiryWaves, SeaState, Spectrum};
-use buoyancy_core::{Mesh, Pose};
 
 const BODIES: usize = 100;
 /// The physics step, s: one per `App::update`.
@@ -414,11 +414,14 @@ fn states(app: &mut App, backend: Backend, entities: &[Entity]) -> Vec<BodyState
     }
 }
 
+#[cfg(feature = "avian")]
 fn vector(v: Vec3) -> Vector3<f64> {
     Vector3::new(f64::from(v.x), f64::from(v.y), f64::from(v.z))
 }
 
-fn pose(t: Vec3, q: Quat) -> Pose<f64> {
+#[cfg(feature = "avian")]
+fn pose(t: Vec3, q: Quat) -> buoyancy_core::Pose<f64> {
+    use buoyancy_core::Pose;
     use buoyancy_core::nalgebra::{Quaternion, Translation3, UnitQuaternion};
     Pose::from_parts(
         Translation3::from(vector(t)),
@@ -435,8 +438,6 @@ fn pose(t: Vec3, q: Quat) -> Pose<f64> {
 #[cfg(feature = "rapier")]
 fn rapier_states(app: &mut App, entities: &[Entity]) -> Vec<BodyState> {
     use bevy_rapier3d::prelude::{RapierRigidBodyHandle, RapierRigidBodySet};
-    use buoyancy_core::controller::Motion;
-    use buoyancy_core::nalgebra::Matrix3;
     let world = app.world_mut();
     let mut sets = world.query::<&RapierRigidBodySet>();
     let set = sets.single(world).expect("one rapier context");
@@ -446,31 +447,7 @@ fn rapier_states(app: &mut App, entities: &[Entity]) -> Vec<BodyState> {
             let handle = world
                 .get::<RapierRigidBodyHandle>(e)
                 .expect("a rapier body");
-            let rb = &set.bodies[handle.0];
-            let props = rb.mass_properties();
-            let i = &props.effective_world_inv_inertia;
-            let position = rb.position();
-            BodyState {
-                pose: pose(position.translation, position.rotation),
-                center_of_mass: Point3::from(vector(rb.center_of_mass())),
-                linear_velocity: vector(rb.linvel()),
-                angular_velocity: vector(rb.angvel()),
-                mass: f64::from(rb.mass()),
-                inverse_mass: vector(props.effective_inv_mass),
-                inverse_inertia: Matrix3::new(
-                    i.m11, i.m12, i.m13, i.m12, i.m22, i.m23, i.m13, i.m23, i.m33,
-                )
-                .cast::<f64>(),
-                gravity_scale: f64::from(rb.gravity_scale()),
-                applied_force: vector(rb.user_force()).cast::<f32>(),
-                applied_torque: vector(rb.user_torque()).cast::<f32>(),
-                motion: if rb.is_dynamic() && rb.is_enabled() {
-                    Motion::Dynamic
-                } else {
-                    Motion::Inactive
-                },
-                sleeping: rb.is_sleeping(),
-            }
+            buoyancy_rapier::body_state(&set.bodies[handle.0])
         })
         .collect()
 }

@@ -354,8 +354,10 @@ impl FloatingBodies {
     }
 }
 
-/// What the controller reads of a rapier body.
-fn body_state(rb: &RigidBody) -> BodyState {
+/// What the controller reads of a rapier body: its pose and center of mass (world frame), its
+/// velocities, mass and effective inverse mass and inertia (world frame), gravity scale, the
+/// user force and torque it holds, whether it moves, and whether it sleeps.
+pub fn body_state(rb: &RigidBody) -> BodyState {
     let props = rb.mass_properties();
     let i = &props.effective_world_inv_inertia;
     BodyState {

@@ -122,6 +122,6 @@ mod shapes;
 pub use buoyancy_core;
 pub use buoyancy_core::controller::{DampingResolution, FloatReport, Outcome, Rest};
 pub use error::Error;
-pub use floating_bodies::FloatingBodies;
+pub use floating_bodies::{FloatingBodies, body_state};
 pub use options::{FloatOptions, FloatingColliders};
 pub use shapes::{ShapeError, ShapeMeshes};

@@ -238,19 +238,7 @@ fn spawn(
                     } => Collider::cylinder(*half_height, *radius),
                     Shape::Hull(points) => Collider::convex_hull(points).ok_or_else(hull_error)?,
                 };
-                let mass = match body.mass {
-                    BodyMass::Density(density) => ColliderMassProperties::Density(density),
-                    BodyMass::Given {
-                        mass,
-                        center,
-                        inertia,
-                    } => ColliderMassProperties::MassProperties(MassProperties {
-                        local_center_of_mass: center,
-                        mass,
-                        principal_inertia_local_frame: Quat::IDENTITY,
-                        principal_inertia: inertia,
-                    }),
-                };
+                let mass = rapier_mass(&body.mass, 1.0);
                 entity.insert((RigidBody::Dynamic, collider, mass, Velocity::default()));
             }
         }
@@ -291,6 +279,26 @@ fn spawn(
     }
     let _ = hull_error;
     Ok(entity.id())
+}
+
+/// bevy_rapier's mass properties for `mass`, its mass and inertia scaled by `factor` (the
+/// center of mass kept): a density times `factor`, or the given ones.
+#[cfg(feature = "rapier")]
+pub fn rapier_mass(mass: &BodyMass, factor: f32) -> bevy_rapier3d::prelude::ColliderMassProperties {
+    use bevy_rapier3d::prelude::{ColliderMassProperties, MassProperties};
+    match *mass {
+        BodyMass::Density(density) => ColliderMassProperties::Density(density * factor),
+        BodyMass::Given {
+            mass,
+            center,
+            inertia,
+        } => ColliderMassProperties::MassProperties(MassProperties {
+            local_center_of_mass: center,
+            mass: mass * factor,
+            principal_inertia_local_frame: Quat::IDENTITY,
+            principal_inertia: inertia * factor,
+        }),
+    }
 }
 
 /// The harbor's bodies, as a resource for the systems that draw and report them.

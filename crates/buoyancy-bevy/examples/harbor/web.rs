@@ -115,8 +115,6 @@ fn follow_the_densities(
         &mut bevy_rapier3d::prelude::ColliderMassProperties,
     )>,
 ) {
-    use crate::scene::BodyMass;
-    use bevy_rapier3d::prelude::{ColliderMassProperties, MassProperties};
     if current.0.is_empty() {
         current.0 = harbor.bodies.iter().map(|b| b.mean_density()).collect();
     }
@@ -130,19 +128,7 @@ fn follow_the_densities(
         }
         let body = &harbor.bodies[*i];
         let factor = (density / body.mean_density()) as f32;
-        *mass = match body.mass {
-            BodyMass::Density(d) => ColliderMassProperties::Density(d * factor),
-            BodyMass::Given {
-                mass,
-                center,
-                inertia,
-            } => ColliderMassProperties::MassProperties(MassProperties {
-                local_center_of_mass: center,
-                mass: mass * factor,
-                principal_inertia_local_frame: Quat::IDENTITY,
-                principal_inertia: inertia * factor,
-            }),
-        };
+        *mass = crate::rapier_mass(&body.mass, factor);
         current.0[*i] = density;
     }
 }
