@@ -2,7 +2,7 @@
 
 import os
 from collections.abc import Callable, Iterable, Sequence
-from typing import Final, Literal, Protocol, SupportsIndex, TypeAlias, final, overload
+from typing import Any, Final, Literal, Protocol, SupportsIndex, TypeAlias, final, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -58,6 +58,7 @@ __all__ = [
     "Waterplane",
     "Waves",
     "_rapier_bodies",
+    "_unpickle",
     "_world_inverse_inertias",
     "capsule",
     "cube",
@@ -87,6 +88,13 @@ class MeshError(ValueError):
 class MeshDefect:
     """One kind of problem found in a mesh, with its count and first culprits (zero-based)."""
 
+    def __new__(
+        cls,
+        kind: _DefectKind,
+        count: int,
+        examples: tuple[dict[str, int | tuple[int, ...]], ...],
+    ) -> MeshDefect: ...
+    def __reduce__(self) -> tuple[type[MeshDefect], tuple[str, int, tuple[Any, ...]]]: ...
     @property
     def kind(self) -> _DefectKind: ...
     @property
@@ -930,6 +938,10 @@ class Controller:
         """One step of every body: the forces and torques to add (N, 3) and whether to wake (N,)."""
 
 def load(path: str | os.PathLike[str], close_openings: bool = False) -> Mesh: ...
+def _unpickle(
+    class_name: str, state: str
+) -> Waterplane | Hydrostatics | Equilibrium | GzCurve | HydrostaticTable | BuoyancyBatch:
+    """Rebuilds a pickled result (what its ``__reduce__`` returns)."""
 def cube(n: int = 1) -> Mesh: ...
 def uv_sphere(radius: float = 1.0, slices: int = 32, stacks: int = 16) -> Mesh: ...
 def torus(major: float = 1.0, minor: float = 0.25, segments: int = 48, sides: int = 16) -> Mesh: ...

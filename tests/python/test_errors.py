@@ -40,7 +40,7 @@ def test_mesh_error_is_a_value_error() -> None:
         (TET_V, np.zeros((4, 4), int), r"faces: expected shape \(M, 3\)"),
         (TET_V, [*TET_F[:3], (1, 2, 3.5)], r"faces\[3\]: 3.5 is not a vertex index"),
         (TET_V, [*TET_F[:3], (1, 2, -3)], r"faces\[3\]: -3 is not a vertex index"),
-        ([("a", "b", "c")] * 4, TET_F, "vertices: expected an array of numbers"),
+        ([("a", "b", "c")] * 4, TET_F, "vertices: expected an array of real numbers, got an array of strings"),
         ([(0, 0, 0), (1, 0)], TET_F, "vertices: expected an array of numbers"),
     ],
 )
@@ -108,12 +108,16 @@ def test_mesh_error_without_defects_of_the_triangles() -> None:
         (dict(normal=(0, 0, 0)), "^normal: is the zero vector"),
         (dict(normal=(0, NAN, 0)), "^normal: has a NaN or infinite component"),
         (dict(normal=(0, 1)), r"normal: expected 3 numbers \(shape \(3,\)\), got shape \(2,\)"),
-        (dict(normal="up"), "normal: expected an array of numbers"),
     ],
 )
 def test_water_errors(kwargs, match: str) -> None:  # type: ignore[no-untyped-def]
     with pytest.raises(ValueError, match=match):
         buoyancy.Water(**kwargs)
+
+
+def test_a_string_for_a_vector_is_a_type_error() -> None:
+    with pytest.raises(TypeError, match="^normal: expected an array of real numbers, got an array of strings$"):
+        buoyancy.Water(normal="up")  # type: ignore[arg-type]
 
 
 def test_gravity_as_a_vector_says_how_to_write_it() -> None:
@@ -185,8 +189,8 @@ def test_wrong_types_name_the_argument(call, message: str) -> None:  # type: ign
     "call, match",
     [
         (lambda: shapes.cube(-2), "^n: must be a non-negative integer, got -2$"),
-        (lambda: shapes.torus_knot(q=2**40), "^q: is too large$"),
-        (lambda: shapes.uv_sphere(slices=2**70), "^slices: is too large$"),
+        (lambda: shapes.torus_knot(q=2**40), f"^q: must be at most 4294967295, got {2**40}$"),
+        (lambda: shapes.uv_sphere(slices=2**70), f"^slices: must be at most 9223372036854775807, got {2**70}$"),
         (
             lambda: TET.buoyancy_batch([(0, 0, 0)], None, threads=-1),
             "^threads: must be a non-negative integer, got -1$",
@@ -208,7 +212,6 @@ ROT_45 = np.array([[np.cos(0.7), -np.sin(0.7), 0], [np.sin(0.7), np.cos(0.7), 0]
         (dict(position=np.zeros((1, 3))), r"position: expected 3 numbers .* got shape \(1, 3\)"),
         (dict(position=(NAN, 0, 0)), "position: has a NaN or infinite component"),
         (dict(position=np.array([0, INF, 0])), "position: has a NaN or infinite component"),
-        (dict(position="abc"), "position: expected an array of numbers"),
         (dict(rotation=(0, 0, 0, 2)), "rotation: the quaternion .* has norm 2, not 1"),
         (dict(rotation=(0, 0, 0, 0)), "rotation: the quaternion .* has norm 0, not 1"),
         (dict(rotation=(0, 0, 0, 1.001)), "rotation: the quaternion .* not 1"),

@@ -587,7 +587,8 @@ NAN = float("nan")
         (lambda: buoyancy.Waves.jonswap(1.0, 8.0, spreading=0.0), ValueError, "^spreading: invalid water surface"),
         (lambda: buoyancy.Waves.jonswap(1.0, 8.0, n=0), ValueError, "^n: invalid water surface: a sea state needs"),
         (lambda: buoyancy.Waves.jonswap(1.0, 8.0, n=-3), ValueError, "^n: must be a non-negative integer"),
-        (lambda: buoyancy.Waves.jonswap(1.0, 8.0, seed=-1), TypeError, "^seed: expected an integer from 0 to 2"),
+        (lambda: buoyancy.Waves.jonswap(1.0, 8.0, seed=-1), ValueError, "^seed: must be an integer from 0 to 2"),
+        (lambda: buoyancy.Waves.jonswap(1.0, 8.0, seed=1.5), TypeError, "^seed: expected an integer from 0 to 2"),
         (lambda: buoyancy.Waves.jonswap(1.0, 8.0, depth=0.0), ValueError, "^depth: invalid water surface"),
         (
             lambda: buoyancy.Waves.jonswap(1.0, 8.0, direction=(0, 1, 0)),

@@ -23,6 +23,7 @@ use crate::{Mesh, Method};
 /// mass onto the water plane: the point where buoyancy starts to act as the body enters the
 /// water. Volume, force and torque are then as computed (zero, or round-off), never NaN.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Buoyancy<T: Real> {
     /// Volume under water, m³. Never negative for [`Method::Exact`], also for a body touching
     /// the water within round-off (see `tests/contact.rs`); it may be negative for the

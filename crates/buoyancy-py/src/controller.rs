@@ -278,9 +278,27 @@ fn part(item: &Bound<'_, PyAny>, name: &str) -> PyResult<GivenPart> {
     })
 }
 
-/// The `parts` argument: one `Mesh`, or a list (or tuple) of parts.
+/// Whether `parts` is one `(mesh, position, quaternion)` tuple rather than a tuple of parts: a
+/// mesh, then something that is neither a mesh nor a tuple starting with one.
+fn is_one_placed_part(parts: &Bound<'_, PyAny>) -> bool {
+    let Ok(tuple) = parts.cast::<PyTuple>() else {
+        return false;
+    };
+    let item = |k: usize| tuple.get_item(k).ok();
+    let is_mesh = |obj: &Bound<'_, PyAny>| obj.cast::<PyMesh>().is_ok();
+    let starts_with_mesh = |obj: &Bound<'_, PyAny>| {
+        obj.cast::<PyTuple>()
+            .is_ok_and(|t| t.get_item(0).is_ok_and(|m| is_mesh(&m)))
+    };
+    tuple.len() == 3
+        && item(0).is_some_and(|m| is_mesh(&m))
+        && item(1).is_some_and(|p| !is_mesh(&p) && !starts_with_mesh(&p))
+}
+
+/// The `parts` argument: one `Mesh`, one `(mesh, position, quaternion)` tuple, or a list (or
+/// tuple) of parts.
 fn given_parts(parts: &Bound<'_, PyAny>) -> PyResult<Vec<GivenPart>> {
-    if parts.cast::<PyMesh>().is_ok() {
+    if parts.cast::<PyMesh>().is_ok() || is_one_placed_part(parts) {
         return Ok(vec![part(parts, "parts")?]);
     }
     let items: Vec<Bound<'_, PyAny>> = if let Ok(list) = parts.cast::<PyList>() {
@@ -495,14 +513,15 @@ impl PyController {
     /// `index` as a body number, or an `IndexError`.
     fn body(&self, index: &Bound<'_, PyAny>) -> PyResult<usize> {
         let n = self.inner.len();
-        let i: i64 = index
-            .extract()
-            .map_err(|_| type_error("index", "an integer", index))?;
-        usize::try_from(i).ok().filter(|&i| i < n).ok_or_else(|| {
-            PyIndexError::new_err(format!(
-                "index: no body {i}; the controller has {n} (numbered from 0)"
-            ))
-        })
+        let i = convert::index(index, "index")?;
+        i.and_then(|i| usize::try_from(i).ok())
+            .filter(|&i| i < n)
+            .ok_or_else(|| {
+                PyIndexError::new_err(format!(
+                    "index: no body {}; the controller has {n} (numbered from 0)",
+                    convert::python_str(index)
+                ))
+            })
     }
 }
 
@@ -661,6 +680,17 @@ impl PyController {
 
     fn __len__(&self) -> usize {
         self.inner.len()
+    }
+
+    /// A controller does not pickle: it is the running books of a simulation (each body's
+    /// share of the engine's forces, its damping state, the last evaluation), which mean
+    /// nothing to another process's engine. Its meshes, water and waves pickle.
+    fn __reduce__(&self) -> PyResult<()> {
+        Err(PyTypeError::new_err(
+            "a Controller cannot be pickled: it holds the running state of one simulation (each \
+             body's share of the engine's forces, its damping state); send its meshes, water and \
+             waves (which pickle) and build a Controller in the other process",
+        ))
     }
 
     fn __repr__(&self, py: Python<'_>) -> PyResult<String> {

@@ -5,11 +5,13 @@
 
 use buoyancy_core::nalgebra::{Matrix3, Matrix4, Quaternion, Rotation3, UnitQuaternion, Vector3};
 use buoyancy_core::{Method, Traversal};
-use numpy::{AllowTypeChange, PyArrayLikeDyn, PyUntypedArrayMethods};
+use numpy::{
+    AllowTypeChange, PyArrayDescrMethods, PyArrayLikeDyn, PyUntypedArray, PyUntypedArrayMethods,
+};
 use pyo3::PyTypeInfo;
-use pyo3::exceptions::PyOverflowError;
+use pyo3::exceptions::{PyOverflowError, PyTypeError};
 use pyo3::prelude::*;
-use pyo3::types::{PyList, PyString, PyTuple};
+use pyo3::types::{PyBool, PyInt, PyList, PyString, PyTuple};
 
 use crate::errors::{arg_error, to_py, type_error};
 use crate::format::g;
@@ -24,8 +26,22 @@ pub fn given<'a, 'py>(obj: Option<&'a Bound<'py, PyAny>>) -> Option<&'a Bound<'p
     obj.filter(|o| !o.is_none())
 }
 
-/// A real number (a Python `int` or `float`, a NumPy scalar, anything with `__float__`).
+/// Whether `obj` is a Python or NumPy boolean, which is an `int` to Python but never a number
+/// here: `True` as a coordinate, a count or an index is a mistake.
+fn is_bool(obj: &Bound<'_, PyAny>) -> bool {
+    obj.is_instance_of::<PyBool>()
+        || obj
+            .get_type()
+            .name()
+            .is_ok_and(|n| n.to_str().is_ok_and(|n| n == "bool" || n == "bool_"))
+}
+
+/// A real number (a Python `int` or `float`, a NumPy scalar, anything with `__float__`; not a
+/// `bool`).
 pub fn real(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<f64> {
+    if is_bool(obj) {
+        return Err(type_error(name, "a number", obj));
+    }
     obj.extract::<f64>()
         .map_err(|_| type_error(name, "a number", obj))
 }
@@ -44,16 +60,61 @@ pub fn time(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<f64> {
     Ok(t)
 }
 
-/// A non-negative integer (a Python `int`, a NumPy integer, anything with `__index__`).
+/// A non-negative integer (a Python `int`, a NumPy integer, anything with `__index__`; not a
+/// `bool`).
 pub fn count(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<usize> {
+    if is_bool(obj) {
+        return Err(type_error(name, "an integer", obj));
+    }
     match obj.extract::<i64>() {
         Ok(n) => usize::try_from(n)
             .map_err(|_| arg_error(name, format!("must be a non-negative integer, got {n}"))),
-        Err(e) if e.is_instance_of::<PyOverflowError>(obj.py()) => {
-            Err(arg_error(name, "is too large"))
-        }
+        Err(e) if e.is_instance_of::<PyOverflowError>(obj.py()) => Err(arg_error(
+            name,
+            format!("must be at most {}, got {}", i64::MAX, python_str(obj)),
+        )),
         Err(_) => Err(type_error(name, "an integer", obj)),
     }
+}
+
+/// An integer from 0 to 2⁶⁴ − 1 (a random seed): out of that range is a `ValueError` giving
+/// the value, another type a `TypeError`.
+pub fn unsigned64(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<u64> {
+    if is_bool(obj) {
+        return Err(type_error(name, "an integer", obj));
+    }
+    match obj.extract::<u64>() {
+        Ok(n) => Ok(n),
+        // An integer out of range (a Python `int`, or a NumPy one through `__index__`).
+        Err(_) if obj.is_instance_of::<PyInt>() || obj.hasattr("__index__").unwrap_or(false) => {
+            Err(arg_error(
+                name,
+                format!(
+                    "must be an integer from 0 to 2**64 - 1, got {}",
+                    python_str(obj)
+                ),
+            ))
+        }
+        Err(_) => Err(type_error(name, "an integer from 0 to 2**64 - 1", obj)),
+    }
+}
+
+/// An index (a Python `int`, a NumPy integer; not a `bool`): `Ok(None)` for an integer beyond
+/// the 64-bit range, which the caller reports as out of range; a `TypeError` for another type.
+pub fn index(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Option<i64>> {
+    if is_bool(obj) {
+        return Err(type_error(name, "an integer", obj));
+    }
+    match obj.extract::<i64>() {
+        Ok(i) => Ok(Some(i)),
+        Err(e) if e.is_instance_of::<PyOverflowError>(obj.py()) => Ok(None),
+        Err(_) => Err(type_error(name, "an integer", obj)),
+    }
+}
+
+/// `str(obj)`, or `?` when that fails.
+pub fn python_str(obj: &Bound<'_, PyAny>) -> String {
+    obj.str().map_or_else(|_| "?".into(), |s| s.to_string())
 }
 
 /// [`count`], or `default` when the argument is absent or `None`.
@@ -114,11 +175,40 @@ pub struct Floats {
     pub values: Vec<f64>,
 }
 
-/// Converts any array-like to float64 (`numpy.asarray` semantics, so ints, float32, nested
-/// lists all work), its values in C order whatever its memory layout. Fails with a
-/// `ValueError` naming `name`.
+/// Converts any array-like of real numbers to float64 (`numpy.asarray` semantics, so ints,
+/// float32, nested lists all work), its values in C order whatever its memory layout. Fails
+/// with a `ValueError` naming `name`, or a `TypeError` for booleans, complex numbers, strings
+/// and other objects (which NumPy would cast, dropping an imaginary part or reading `True` as
+/// 1).
 pub fn floats(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Floats> {
-    let array: PyArrayLikeDyn<'_, f64, AllowTypeChange> = obj
+    // A list or tuple is read by NumPy first: the array it makes says what it holds.
+    let array = match obj.cast::<PyUntypedArray>() {
+        Ok(array) => array.clone(),
+        Err(_) => {
+            let asarray = obj.py().import("numpy")?.getattr("asarray")?;
+            let array = asarray
+                .call1((obj,))
+                .map_err(|e| arg_error(name, format!("expected an array of numbers ({e})")))?;
+            array
+                .cast_into::<PyUntypedArray>()
+                .map_err(|_| type_error(name, "an array of numbers", obj))?
+        }
+    };
+    let kind = array.dtype().kind();
+    // Objects (`O`) are converted one by one below, which fails for anything but a number.
+    let held = match kind {
+        b'b' => Some("booleans"),
+        b'c' => Some("complex numbers"),
+        b'U' | b'S' => Some("strings"),
+        b'V' | b'M' | b'm' => Some("structured or date values"),
+        _ => None,
+    };
+    if let Some(held) = held {
+        return Err(PyTypeError::new_err(format!(
+            "{name}: expected an array of real numbers, got an array of {held}"
+        )));
+    }
+    let array: PyArrayLikeDyn<'_, f64, AllowTypeChange> = array
         .extract()
         .map_err(|e| arg_error(name, format!("expected an array of numbers ({e})")))?;
     let shape = array.shape().to_vec();
@@ -145,29 +235,40 @@ pub fn shape_str(shape: &[usize]) -> String {
     }
 }
 
-/// `N` numbers from a tuple or list of numbers without going through numpy, or `None`.
+/// `N` numbers from a tuple or list of numbers without going through numpy, or `None` (then
+/// [`floats`] reads it). A `bool` among them is a `TypeError` naming `name` (NumPy would make
+/// `[1, 0, True]` an array of integers).
 #[inline]
-fn small_sequence<const N: usize>(obj: &Bound<'_, PyAny>) -> Option<[f64; N]> {
+fn small_sequence<const N: usize>(
+    obj: &Bound<'_, PyAny>,
+    name: &str,
+) -> PyResult<Option<[f64; N]>> {
     let mut out = [0.0; N];
-    if let Ok(t) = obj.cast::<PyTuple>() {
+    let items: Vec<Bound<'_, PyAny>> = if let Ok(t) = obj.cast::<PyTuple>() {
         if t.len() != N {
-            return None;
+            return Ok(None);
         }
-        for (i, o) in out.iter_mut().enumerate() {
-            *o = t.get_borrowed_item(i).ok()?.extract::<f64>().ok()?;
-        }
-        Some(out)
+        t.iter().collect()
     } else if let Ok(l) = obj.cast::<PyList>() {
         if l.len() != N {
-            return None;
+            return Ok(None);
         }
-        for (i, o) in out.iter_mut().enumerate() {
-            *o = l.get_item(i).ok()?.extract::<f64>().ok()?;
-        }
-        Some(out)
+        l.iter().collect()
     } else {
-        None
+        return Ok(None);
+    };
+    for (k, (o, item)) in out.iter_mut().zip(&items).enumerate() {
+        if is_bool(item) {
+            return Err(PyTypeError::new_err(format!(
+                "{name}: expected an array of real numbers, got a bool at [{k}]"
+            )));
+        }
+        match item.extract::<f64>() {
+            Ok(x) => *o = x,
+            Err(_) => return Ok(None),
+        }
     }
+    Ok(Some(out))
 }
 
 /// Checks that every value is finite, naming the argument.
@@ -181,7 +282,7 @@ pub fn finite(values: &[f64], name: &str) -> PyResult<()> {
 
 /// A finite 3-vector from any array-like of shape (3,).
 pub fn vector3(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vector3<f64>> {
-    let v = match small_sequence::<3>(obj) {
+    let v = match small_sequence::<3>(obj, name)? {
         Some(v) => v,
         None => {
             let a = floats(obj, name)?;
@@ -203,7 +304,7 @@ pub fn vector3(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vector3<f64>> {
 
 /// A rotation from a quaternion `(x, y, z, w)` or a 3×3 rotation matrix (row-major values).
 pub fn rotation(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<UnitQuaternion<f64>> {
-    if let Some(q) = small_sequence::<4>(obj) {
+    if let Some(q) = small_sequence::<4>(obj, name)? {
         return quaternion(&q, name);
     }
     let a = floats(obj, name)?;

@@ -2,9 +2,14 @@
 //! problem with its count and first culprits (the core's [`Defect`]), and the attributes set on
 //! the exception (`defects`, `triangle_soup`, `coincident_vertices`, `one_based_indices`).
 
-use buoyancy_core::{Culprit, Defect, MeshDefects};
+use buoyancy_core::{Culprit, Defect, DefectKind, MeshDefects};
+
+use crate::errors::arg_error;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple, PyType};
+
+/// `MeshDefect(kind, count, examples)`'s arguments, as `__reduce__` returns them.
+type DefectArgs = (&'static str, usize, Py<PyTuple>);
 
 /// One kind of problem found in a mesh, an item of ``MeshError.defects``.
 ///
@@ -39,6 +44,38 @@ pub struct PyMeshDefect {
 
 #[pymethods]
 impl PyMeshDefect {
+    /// A defect of `kind` (one of the names above), as `MeshError` reports it; also how a
+    /// pickled one is rebuilt.
+    #[new]
+    fn new(kind: &str, count: usize, examples: Bound<'_, PyTuple>) -> PyResult<Self> {
+        let kind = DefectKind::ALL
+            .iter()
+            .map(|k| k.name())
+            .find(|name| *name == kind)
+            .ok_or_else(|| {
+                let names: Vec<_> = DefectKind::ALL.iter().map(|k| k.name()).collect();
+                arg_error(
+                    "kind",
+                    format!("must be one of {}, got '{kind}'", names.join(", ")),
+                )
+            })?;
+        Ok(Self {
+            kind,
+            count,
+            examples: examples.unbind(),
+        })
+    }
+
+    /// Pickles as its three attributes.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyType>, DefectArgs)> {
+        let this = slf.get();
+        let py = slf.py();
+        Ok((
+            slf.get_type(),
+            (this.kind, this.count, this.examples.clone_ref(py)),
+        ))
+    }
+
     #[getter]
     fn kind(&self) -> &'static str {
         self.kind

@@ -13,6 +13,7 @@ use crate::convert::{self, given};
 use crate::errors::{arg_error, to_py};
 use crate::format::{g, g3};
 use crate::mesh::PyMesh;
+use crate::pickling;
 use crate::water_waves::WaterWaves;
 
 /// A read-only (n, n) array of a matrix.
@@ -149,8 +150,17 @@ pub struct PyWaterplane {
     inner: Waterplane<f64>,
 }
 
+impl PyWaterplane {
+    pub fn from_state(state: &str) -> PyResult<Self> {
+        pickling::state("Waterplane", state).map(|inner| PyWaterplane { inner })
+    }
+}
+
 #[pymethods]
 impl PyWaterplane {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<pickling::Reduce<'py>> {
+        pickling::reduce(py, "Waterplane", &self.inner)
+    }
     #[getter]
     fn area(&self) -> f64 {
         self.inner.area
@@ -227,8 +237,17 @@ pub struct PyHydrostatics {
     inner: Hydrostatics<f64>,
 }
 
+impl PyHydrostatics {
+    pub fn from_state(state: &str) -> PyResult<Self> {
+        pickling::state("Hydrostatics", state).map(|inner| PyHydrostatics { inner })
+    }
+}
+
 #[pymethods]
 impl PyHydrostatics {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<pickling::Reduce<'py>> {
+        pickling::reduce(py, "Hydrostatics", &self.inner)
+    }
     #[getter]
     fn waterplane(&self) -> PyWaterplane {
         PyWaterplane {

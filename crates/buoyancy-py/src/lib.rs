@@ -24,6 +24,7 @@ mod height_grid;
 mod hydrostatics;
 mod io;
 mod mesh;
+mod pickling;
 mod pressure;
 mod rapier_bodies;
 mod result;
@@ -65,6 +66,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     defects::set_defaults(&mesh_error)?;
     m.add("MeshError", mesh_error)?;
     m.add_function(wrap_pyfunction!(io::load, m)?)?;
+    m.add_function(wrap_pyfunction!(pickling::_unpickle, m)?)?;
     m.add_function(wrap_pyfunction!(shapes::cube, m)?)?;
     m.add_function(wrap_pyfunction!(shapes::uv_sphere, m)?)?;
     m.add_function(wrap_pyfunction!(shapes::torus, m)?)?;

@@ -9,9 +9,10 @@ use pyo3::types::PyType;
 use crate::arrays;
 use crate::convert;
 use crate::format::{g, g3};
+use crate::pickling;
 
 /// One evaluation, world frame, SI units.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Row {
     pub volume: f64,
     pub center: [f64; 3],
@@ -263,10 +264,23 @@ impl PyBuoyancyBatch {
             method,
         }
     }
+
+    /// The batch pickled as `state` (see [`pickling`]).
+    pub fn from_state(py: Python<'_>, state: &str) -> PyResult<Self> {
+        let (method, rows): (String, Vec<Row>) = pickling::state("BuoyancyBatch", state)?;
+        let method = method
+            .parse()
+            .map_err(|e| crate::errors::to_py(e, Some("state")))?;
+        Ok(Self::new(py, rows, method))
+    }
 }
 
 #[pymethods]
 impl PyBuoyancyBatch {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<pickling::Reduce<'py>> {
+        pickling::reduce(py, "BuoyancyBatch", &(self.method.name(), &self.rows))
+    }
+
     #[getter]
     fn volume(&self, py: Python<'_>) -> Py<PyArray1<f64>> {
         self.volume.clone_ref(py)
@@ -310,22 +324,24 @@ impl PyBuoyancyBatch {
 
     fn __getitem__(&self, index: &Bound<'_, PyAny>) -> PyResult<PyBuoyancy> {
         let k = self.rows.len();
-        let i: isize = index
-            .extract()
-            .map_err(|_| crate::errors::type_error("index", "an integer", index))?;
-        let row = if i < 0 {
-            k.checked_sub(i.unsigned_abs())
-        } else {
-            Some(i.unsigned_abs()).filter(|&i| i < k)
-        }
-        .and_then(|i| self.rows.get(i));
+        let i = crate::convert::index(index, "index")?;
+        let row = i
+            .and_then(|i| {
+                if i < 0 {
+                    k.checked_sub(usize::try_from(i.unsigned_abs()).ok()?)
+                } else {
+                    usize::try_from(i).ok().filter(|&i| i < k)
+                }
+            })
+            .and_then(|i| self.rows.get(i));
         match row {
             Some(&row) => Ok(PyBuoyancy {
                 row,
                 method: self.method,
             }),
             None => Err(PyIndexError::new_err(format!(
-                "pose index {i} out of range for a batch of {k} poses"
+                "pose index {} out of range for a batch of {k} poses",
+                crate::convert::python_str(index)
             ))),
         }
     }

@@ -8,7 +8,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyTuple, PyType};
 
 use crate::convert;
-use crate::errors::{arg_error, to_py, type_error};
+use crate::errors::{arg_error, to_py};
 use crate::format::g;
 use crate::water::PyWater;
 
@@ -59,9 +59,7 @@ impl SeaOrigin {
             None => None,
         };
         let seed = match convert::given(args.seed) {
-            Some(s) => s
-                .extract::<u64>()
-                .map_err(|_| type_error("seed", "an integer from 0 to 2**64 - 1", s))?,
+            Some(s) => convert::unsigned64(s, "seed")?,
             None => 0,
         };
         let depth = match convert::given(args.depth) {

@@ -10,7 +10,9 @@ use crate::mesh::PyMesh;
 /// A non-negative integer argument (`n`, `slices`, `p`, …) that also fits in a `u32`.
 fn small_count(obj: Option<&Bound<'_, PyAny>>, name: &str, default: u32) -> PyResult<u32> {
     let n = count_or(obj, name, default as usize)?;
-    u32::try_from(n).map_err(|_| crate::errors::arg_error(name, "is too large"))
+    u32::try_from(n).map_err(|_| {
+        crate::errors::arg_error(name, format!("must be at most {}, got {n}", u32::MAX))
+    })
 }
 
 /// The unit cube [-1/2, 1/2]³, each face split in n × n squares (12·n² triangles).

@@ -18,6 +18,7 @@ use crate::errors::{arg_error, to_py};
 use crate::format::g;
 use crate::hydrostatics::{self, PyHydrostatics};
 use crate::mesh::PyMesh;
+use crate::pickling;
 
 /// The Python exception for a core error of the solvers: a solver option or table option names
 /// the Python argument (`python_names` maps the core's parameter names to the Python ones), a
@@ -33,7 +34,15 @@ fn solver_error(e: Error, python_names: &[(&str, &str)]) -> PyErr {
     };
     match e {
         Error::InvalidSolverOption { parameter, reason }
-        | Error::InvalidTableOption { parameter, reason } => arg_error(&rename(parameter), reason),
+        | Error::InvalidTableOption { parameter, reason } => {
+            let name = rename(parameter);
+            // The core takes radians; an argument named `…_deg` is in degrees.
+            if name.ends_with("_deg") {
+                arg_error(&name, reason.replace("(rad)", "(degrees)"))
+            } else {
+                arg_error(&name, reason)
+            }
+        }
         Error::InvalidLoading { .. } => hydrostatics::loading_error(e),
         Error::InvalidMass { reason } => arg_error("mass", reason),
         Error::InvalidDraft { index, .. } => arg_error(&format!("drafts[{index}]"), e),
@@ -261,8 +270,17 @@ impl From<Equilibrium<f64>> for PyEquilibrium {
     }
 }
 
+impl PyEquilibrium {
+    pub fn from_state(state: &str) -> PyResult<Self> {
+        pickling::state("Equilibrium", state).map(|inner| PyEquilibrium { inner })
+    }
+}
+
 #[pymethods]
 impl PyEquilibrium {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<pickling::Reduce<'py>> {
+        pickling::reduce(py, "Equilibrium", &self.inner)
+    }
     #[getter]
     fn position<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
         arrays::vector(py, self.inner.pose.translation.vector.as_slice())
@@ -376,6 +394,10 @@ pub struct PyGzCurve {
 }
 
 impl PyGzCurve {
+    pub fn from_state(state: &str) -> PyResult<Self> {
+        pickling::state("GzCurve", state).map(|inner| PyGzCurve { inner })
+    }
+
     fn column<'py>(
         &self,
         py: Python<'py>,
@@ -387,6 +409,9 @@ impl PyGzCurve {
 
 #[pymethods]
 impl PyGzCurve {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<pickling::Reduce<'py>> {
+        pickling::reduce(py, "GzCurve", &self.inner)
+    }
     #[getter]
     fn heel<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
         self.column(py, |p| p.heel.to_degrees())
@@ -536,6 +561,10 @@ pub struct PyHydrostaticTable {
 }
 
 impl PyHydrostaticTable {
+    pub fn from_state(state: &str) -> PyResult<Self> {
+        pickling::state("HydrostaticTable", state).map(|rows| PyHydrostaticTable { rows })
+    }
+
     fn get<'py>(&self, py: Python<'py>, name: &str) -> Bound<'py, PyArray1<f64>> {
         let (_, _, f) = COLUMNS
             .iter()
@@ -547,6 +576,9 @@ impl PyHydrostaticTable {
 
 #[pymethods]
 impl PyHydrostaticTable {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<pickling::Reduce<'py>> {
+        pickling::reduce(py, "HydrostaticTable", &self.rows)
+    }
     #[getter]
     fn columns(&self) -> Vec<&'static str> {
         COLUMNS.iter().map(|(n, _, _)| *n).collect()

@@ -75,6 +75,7 @@ impl<T: Real> EquilibriumOptions<T> {
 /// A floating body at rest: see [`Mesh::equilibrium`] and the [module
 /// documentation](super#equilibrium).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Equilibrium<T: Real> {
     /// The pose (mesh → world) at rest.
     pub pose: Pose<T>,

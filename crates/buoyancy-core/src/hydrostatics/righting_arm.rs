@@ -22,6 +22,7 @@ pub enum Trim<T: Real> {
 
 /// One point of a [`GzCurve`]: the body at an imposed heel, its draft (and trim) solved.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GzPoint<T: Real> {
     /// The heel imposed, rad (right-handed about the body's longitudinal axis).
     pub heel: T,
@@ -45,6 +46,7 @@ pub struct GzPoint<T: Real> {
 /// Where the range of positive stability of a [`GzCurve`] ends
 /// ([`GzCurve::positive_stability`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum PositiveStability<T: Real> {
     /// GZ goes from positive to zero or negative at this heel, rad: the angle of vanishing
     /// stability ([`GzCurve::vanishing_angle`]).
@@ -59,6 +61,7 @@ pub enum PositiveStability<T: Real> {
 
 /// A righting-arm curve: see [`Mesh::gz_curve`].
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GzCurve<T: Real> {
     /// The points, in the order of the heels given (increasing), up to the last before the
     /// water reaches an opening (see [`flooding`](Self::flooding)).

@@ -158,6 +158,7 @@ impl<T: Real> LoadingCondition<T> {
 /// quantities belong to rolling, about `e₁` (the transverse moment `I_T = ∫η² dA`),
 /// *longitudinal* ones to pitching, about `e₂` (`I_L = ∫ξ² dA`).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Hydrostatics<T: Real> {
     /// The waterplane, its basis along the body's longitudinal axis.
     pub waterplane: Waterplane<T>,

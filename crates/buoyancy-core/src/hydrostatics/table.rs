@@ -145,6 +145,7 @@ impl<T: Real> TableOptions<T> {
 /// axis projected on the still plane (`hydrostatics.waterplane.axes[0]`), `O` the mesh frame's
 /// origin at the row's pose (world frame).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct HydrostaticRow<T: Real> {
     /// Draft `T`: depth of the keel (the lowest vertex along `n`) below the still level, m.
     pub draft: T,

@@ -20,6 +20,7 @@ use crate::{Error, Mesh, Pose, Real, Water};
 /// moments are zero and the center of flotation is the projection of the body's center of
 /// volume on the plane.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Waterplane<T: Real> {
     /// Waterplane area `A = ∫ dA`, m².
     pub area: T,
