@@ -46,6 +46,11 @@ AXES = {
     "-z": (0.0, 0.0, -1.0),
 }
 
+# The most heels of a GZ curve and drafts of a table the command line computes: each heel is a
+# solve of the trim, each draft one of the table's rows; more is a mistyped step, not a finer curve.
+MAX_HEELS = 100_000
+MAX_ROWS = 100_000
+
 # The printed columns of the hydrostatic table: heading and format.
 TABLE_HEADINGS = {
     "draft": ("T", ".4f"),
@@ -234,8 +239,14 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.error(f"--axis {args.axis} is along --up {args.up}: the longitudinal axis must be horizontal")
     if not (args.heel_step > 0 and 0 < args.heel_max <= 180):
         parser.error("--heel-step must be positive and --heel-max in (0, 180]")
-    if args.rows < 1:
-        parser.error("--rows must be at least 1")
+    heel_count = math.floor(args.heel_max / args.heel_step + 1e-9) + 1 if args.heel_step > 0 else 0
+    if heel_count > MAX_HEELS:
+        parser.error(
+            f"--heel-step {args.heel_step:g} makes {heel_count:,} heels up to {args.heel_max:g}°; at most "
+            f"{MAX_HEELS:,} (a step of at least {args.heel_max / (MAX_HEELS - 1):.3g}°)"
+        )
+    if not 1 <= args.rows <= MAX_ROWS:
+        parser.error(f"--rows must be from 1 to {MAX_ROWS:,}, got {args.rows:,}")
     problem = output_folder(args.out)
     if problem is not None:
         print(f"error: {problem}", file=sys.stderr)
@@ -249,7 +260,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         curve = mesh.gz_curve(args.mass, args.cog, heels, axis=axis, water=water, **trim)
         drafts = table_drafts(rest.draft, table_height(mesh, up), args.rows)
         table = mesh.hydrostatic_table(drafts, water=water, axis=axis, center_of_mass=args.cog)
-    except (OSError, ValueError, RuntimeError) as error:
+    except (OSError, ValueError, RuntimeError, MemoryError) as error:
         message = str(error)
         if "open edges" in message and not args.close_openings:
             message += (

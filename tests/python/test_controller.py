@@ -475,6 +475,65 @@ def test_threads_share_nothing() -> None:
         np.testing.assert_array_equal(result, expected)
 
 
+def test_one_controller_shared_by_threads_takes_their_calls_in_turn() -> None:
+    # Once `RuntimeError('Already borrowed')` for a call while another thread stepped (the step
+    # runs without the interpreter lock). Now each call waits for the one before: four threads
+    # stepping and reading one controller get what the same calls give one after another.
+    n = 40
+    mesh = buoyancy.shapes.uv_sphere(0.5, 64, 32)
+    change = {"positions": np.random.default_rng(3).uniform(-0.5, 0.5, (n, 3))}
+    controller = buoyancy.Controller()
+    for _ in range(n):
+        controller.add(mesh)
+    expected = buoyancy.Controller()
+    for _ in range(n):
+        expected.add(mesh)
+    reference = expected.step(0.0, **states(n, **change))[0]
+    errors: list[BaseException] = []
+    forces: list[np.ndarray] = []
+    barrier = threading.Barrier(4)
+
+    def work() -> None:
+        try:
+            barrier.wait()
+            for _ in range(20):
+                forces.append(controller.step(0.0, **states(n, **change))[0])
+                assert len(controller) == n
+                assert controller.report(0).submerged_volume > 0
+                repr(controller)
+        except BaseException as error:  # reported below, in the main thread
+            errors.append(error)
+
+    threads = [threading.Thread(target=work) for _ in range(4)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert errors == []
+    assert len(forces) == 80
+    # dt = 0 and no force held by the engine at each step: every step of the same states adds
+    # the whole buoyancy again, as the first of a fresh controller does.
+    for force in forces:
+        np.testing.assert_array_equal(force, reference)
+
+
+def test_a_surface_function_that_calls_its_controller_is_told_it_cannot() -> None:
+    controller = buoyancy.Controller()
+
+    def surface(points: np.ndarray, t: float) -> np.ndarray:
+        len(controller)  # from within the controller's own step
+        return np.zeros(len(points))
+
+    controller.water = buoyancy.Water(waves=surface)
+    controller.add(buoyancy.shapes.cube())
+    with pytest.raises(RuntimeError, match="called from within its own step"):
+        controller.step(1 / 60, **states(1))
+    # The controller is not left locked.
+    controller.water = buoyancy.Water()
+    controller.step(1 / 60, **states(1))
+    assert len(controller) == 1
+
+
 @pytest.mark.parametrize("name", ["Controller", "Controller.add", "FloatReport", "shapes.wigley_hull"])
 def test_docstring_examples(name: str) -> None:
     obj: Any = buoyancy

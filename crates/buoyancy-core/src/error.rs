@@ -1,4 +1,5 @@
 use alloc::string::String;
+use alloc::vec::Vec;
 use core::fmt;
 
 use crate::MeshDefects;
@@ -59,6 +60,15 @@ pub enum Error {
         parameter: &'static str,
         /// What is wrong with it.
         reason: &'static str,
+    },
+    /// A request whose memory cannot be allocated: a shape's resolution, a sea state's
+    /// component count, a table's drafts or a curve's heels that need more memory than the
+    /// system gives. Checked before the work (the allocator's failure would abort the process).
+    OutOfMemory {
+        /// The parameter whose size asked for the memory, as named in the function's signature.
+        parameter: &'static str,
+        /// The bytes asked for (saturated at `usize::MAX`).
+        bytes: usize,
     },
     /// More vertices than a `u32` index can address.
     TooManyVertices {
@@ -242,6 +252,11 @@ impl fmt::Display for Error {
             Error::InvalidSolverOption { parameter, reason } => {
                 write!(f, "invalid solver option {parameter}: {reason}")
             }
+            Error::OutOfMemory { parameter, bytes } => write!(
+                f,
+                "{parameter} asks for {} of memory, more than can be allocated: make it smaller",
+                Bytes(*bytes)
+            ),
             Error::TooManyVertices { count } => write!(
                 f,
                 "the mesh has {count} vertices; at most {} can be indexed with u32",
@@ -338,6 +353,52 @@ impl fmt::Display for Error {
 }
 
 impl core::error::Error for Error {}
+
+/// A byte count as a person reads it: `48 GB`, `1.5 TB`, `512 bytes` (decimal units).
+struct Bytes(usize);
+
+impl fmt::Display for Bytes {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let bytes = self.0 as f64;
+        match ["kB", "MB", "GB", "TB", "PB", "EB"]
+            .iter()
+            .zip(1..7)
+            .rev()
+            .find(|&(_, k)| bytes >= libm::pow(1e3, k as f64))
+        {
+            Some((unit, k)) => write!(f, "{:.3} {unit}", bytes / libm::pow(1e3, k as f64)),
+            None => write!(f, "{} bytes", self.0),
+        }
+    }
+}
+
+/// A vector with room for `count` items, or [`Error::OutOfMemory`] naming `parameter` when
+/// the memory cannot be had (a `count` whose bytes overflow `usize` included), instead of the
+/// allocator's abort.
+pub(crate) fn vec_with_capacity<T>(count: usize, parameter: &'static str) -> Result<Vec<T>, Error> {
+    let mut vec = Vec::new();
+    vec.try_reserve_exact(count)
+        .map_err(|_| Error::OutOfMemory {
+            parameter,
+            bytes: count.saturating_mul(core::mem::size_of::<T>()),
+        })?;
+    Ok(vec)
+}
+
+/// Checks that `count` items of `bytes_each` bytes can be allocated, by asking for them once
+/// (and giving them back): for work whose memory is spread over many vectors, such as preparing
+/// a mesh. The operating system may promise memory it does not have; this catches what it
+/// refuses outright.
+pub(crate) fn check_memory(
+    count: usize,
+    bytes_each: usize,
+    parameter: &'static str,
+) -> Result<(), Error> {
+    let bytes = count.saturating_mul(bytes_each);
+    vec_with_capacity::<u8>(bytes, parameter)
+        .map(drop)
+        .map_err(|_| Error::OutOfMemory { parameter, bytes })
+}
 
 /// The message of [`Error::ZeroVolume`]: what the numbers say about the mesh, and what to check.
 fn write_zero_volume(f: &mut fmt::Formatter<'_>, volume: f64, scale: f64) -> fmt::Result {

@@ -24,6 +24,12 @@ pub use stl::parse_stl;
 #[cfg(feature = "std")]
 use crate::{Real, shape::Shape};
 
+/// The memory [`load`] may hold while it reads and parses a file, per byte of the file: the
+/// bytes, and the vertices and triangles parsed from them (a binary STL's 50 bytes a triangle
+/// become 3 vertices of 24 bytes and 12 bytes of indices, 84; an ASCII format's are fewer).
+#[cfg(feature = "std")]
+pub const READ_BYTES_PER_FILE_BYTE: usize = 3;
+
 /// An [`Error::Parse`] at one-based `line` (0: not tied to a line).
 fn parse_error(line: usize, message: String) -> Error {
     Error::Parse { line, message }
@@ -32,10 +38,16 @@ fn parse_error(line: usize, message: String) -> Error {
 /// Reads a mesh file, its format chosen by its extension (case-insensitive): `.obj`
 /// ([`parse_obj`]), `.stl` ([`parse_stl`]) or `.ply` ([`parse_ply`]).
 ///
+/// The file is read whole, then parsed: reading holds the file and the parsed vertices and
+/// triangles at once, at most [`READ_BYTES_PER_FILE_BYTE`] times the file's size, which is
+/// asked for before the read (building the [`Mesh`](crate::Mesh) then needs its own memory).
+///
 /// # Errors
 /// [`Error::UnknownFormat`] for any other extension; [`Error::Io`] if the file cannot be read
-/// (its [`kind`](std::io::ErrorKind) says why, e.g. `NotFound`); [`Error::Parse`] if its
-/// content is not a mesh of that format.
+/// (its [`kind`](std::io::ErrorKind) says why, e.g. `NotFound`, `IsADirectory`, or
+/// `InvalidInput` for a FIFO, device or socket, which are not read); [`Error::OutOfMemory`]
+/// (parameter `path`) if the memory to read it cannot be had; [`Error::Parse`] if its content
+/// is not a mesh of that format.
 #[cfg(feature = "std")]
 pub fn load<T: Real>(path: impl AsRef<std::path::Path>) -> Result<Shape<T>, Error> {
     use alloc::string::ToString;
@@ -49,15 +61,34 @@ pub fn load<T: Real>(path: impl AsRef<std::path::Path>) -> Result<Shape<T>, Erro
         .extension()
         .and_then(|e| e.to_str())
         .map(|e| e.to_ascii_lowercase());
-    match extension.as_deref() {
-        Some("obj") => {
-            let text = std::fs::read_to_string(path).map_err(io_error)?;
-            parse_obj(&text)
-        }
-        Some("stl") => parse_stl(&std::fs::read(path).map_err(io_error)?),
-        Some("ply") => parse_ply(&std::fs::read(path).map_err(io_error)?),
-        _ => Err(Error::UnknownFormat {
+    if !matches!(extension.as_deref(), Some("obj" | "stl" | "ply")) {
+        return Err(Error::UnknownFormat {
             path: path.display().to_string(),
-        }),
+        });
+    }
+    // Only a regular file: opening a FIFO would wait for a writer, and a device such as
+    // /dev/zero never ends.
+    let metadata = std::fs::metadata(path).map_err(io_error)?;
+    if metadata.is_dir() {
+        return Err(io_error(std::io::ErrorKind::IsADirectory.into()));
+    }
+    if !metadata.is_file() {
+        return Err(Error::Io {
+            path: path.display().to_string(),
+            kind: std::io::ErrorKind::InvalidInput,
+            message: "not a regular file (a FIFO, device or socket): a mesh is read from a \
+                      file of known size"
+                .to_string(),
+        });
+    }
+    let size = usize::try_from(metadata.len()).unwrap_or(usize::MAX);
+    crate::error::check_memory(size, READ_BYTES_PER_FILE_BYTE, "path")?;
+    let bytes = std::fs::read(path).map_err(io_error)?;
+    match extension.as_deref() {
+        // Text: bytes that are not UTF-8 (a comment in Latin-1) are replaced, so that what is
+        // not a mesh is a parse error naming the line, as in the other formats.
+        Some("obj") => parse_obj(&String::from_utf8_lossy(&bytes)),
+        Some("stl") => parse_stl(&bytes),
+        _ => parse_ply(&bytes),
     }
 }

@@ -13,6 +13,7 @@ use core::f64::consts::TAU;
 
 use nalgebra::{Point3, Vector3};
 
+use crate::error::vec_with_capacity;
 use crate::{Error, Real};
 
 /// Vertices and outward-wound triangles of a procedural mesh.
@@ -83,9 +84,10 @@ pub fn cube<T: Real>(n: usize) -> Result<Shape<T>, Error> {
     )?;
     let side = n + 1;
     // Lattice points (i, j, k) ∈ [0, n]³ on the surface get an index on first use.
-    let mut index = alloc::vec![u32::MAX; side * side * side];
-    let mut vertices = Vec::new();
-    let mut triangles = Vec::with_capacity(12 * n * n);
+    let mut index = vec_with_capacity(side * side * side, "n")?;
+    index.resize(side * side * side, u32::MAX);
+    let mut vertices = vec_with_capacity(6 * n * n + 2, "n")?;
+    let mut triangles = vec_with_capacity(12 * n * n, "n")?;
     let mut vertex = |p: [usize; 3]| -> u32 {
         let slot = &mut index[(p[0] * side + p[1]) * side + p[2]];
         if *slot == u32::MAX {
@@ -137,7 +139,7 @@ pub fn uv_sphere<T: Real>(radius: f64, slices: usize, stacks: usize) -> Result<S
             .and_then(|v| v.checked_add(2)),
         "slices",
     )?;
-    let mut vertices = Vec::with_capacity(2 + slices * (stacks - 1));
+    let mut vertices = vec_with_capacity(2 + slices * (stacks - 1), "slices")?;
     vertices.push(Point3::new(0.0, radius, 0.0));
     for i in 1..stacks {
         let polar = core::f64::consts::PI * i as f64 / stacks as f64;
@@ -153,7 +155,7 @@ pub fn uv_sphere<T: Real>(radius: f64, slices: usize, stacks: usize) -> Result<S
     let south = vertices.len() as u32;
     vertices.push(Point3::new(0.0, -radius, 0.0));
     let ring = |i: usize, j: usize| (1 + (i - 1) * slices + j % slices) as u32;
-    let mut triangles = Vec::with_capacity(2 * slices * (stacks - 1));
+    let mut triangles = vec_with_capacity(2 * slices * (stacks - 1), "slices")?;
     for j in 0..slices {
         triangles.push([0, ring(1, j), ring(1, j + 1)]);
         triangles.push([south, ring(stacks - 1, j + 1), ring(stacks - 1, j)]);
@@ -534,8 +536,8 @@ pub fn capsule<T: Real>(
             reason: "must be even (a ring at each end of the cylinder)",
         });
     }
-    let profile = |scale: f64, half_height: f64| {
-        let mut profile = Vec::with_capacity(stacks + 2);
+    let profile = |scale: f64, half_height: f64| -> Result<Vec<(f64, f64)>, Error> {
+        let mut profile = vec_with_capacity(stacks + 2, "stacks")?;
         for i in 0..=stacks {
             let polar = core::f64::consts::PI * i as f64 / stacks as f64;
             let (sin, cos) = (libm::sin(polar), libm::cos(polar));
@@ -552,13 +554,13 @@ pub fn capsule<T: Real>(
                 profile.push((r, -half_height + scale * radius * cos));
             }
         }
-        profile
+        Ok(profile)
     };
     // A: the prism between the two rims, exact for the polygon; B: the two caps, closed on
     // each other (half height 0, one shared equator counted once).
     let n = segments as f64;
     let prism = n / 2.0 * libm::sin(TAU / n) * radius * radius * 2.0 * half_height;
-    let (caps, caps_triangles) = lathe(&profile(1.0, 0.0)[..], segments)?;
+    let (caps, caps_triangles) = lathe(&profile(1.0, 0.0)?[..], segments)?;
     let caps = volume(&caps, &caps_triangles);
     let target = core::f64::consts::PI * radius * radius * (2.0 * half_height + 4.0 * radius / 3.0);
     let mut scale = 1.0;
@@ -566,7 +568,7 @@ pub fn capsule<T: Real>(
         let f = scale * scale * (prism + scale * caps) - target;
         scale -= f / (scale * (2.0 * prism + 3.0 * scale * caps));
     }
-    let mut full = profile(scale, half_height);
+    let mut full = profile(scale, half_height)?;
     // The equator ring is pushed by both caps: once on each end of the cylinder.
     full.dedup_by(|a, b| a == b);
     finish_lathe(&full, segments)
@@ -652,7 +654,7 @@ fn lathe(profile: &[(f64, f64)], segments: usize) -> Result<Shape<f64>, Error> {
         segments.checked_mul(rings).and_then(|v| v.checked_add(2)),
         "segments",
     )?;
-    let mut vertices = Vec::with_capacity(2 + segments * rings);
+    let mut vertices = vec_with_capacity(2 + segments * rings, "segments")?;
     vertices.push(Point3::new(0.0, profile[0].1, 0.0));
     for &(r, y) in &profile[1..=rings] {
         for j in 0..segments {
@@ -667,7 +669,7 @@ fn lathe(profile: &[(f64, f64)], segments: usize) -> Result<Shape<f64>, Error> {
     let south = vertices.len() as u32;
     vertices.push(Point3::new(0.0, profile[rings + 1].1, 0.0));
     let ring = |i: usize, j: usize| (1 + (i - 1) * segments + j % segments) as u32;
-    let mut triangles = Vec::with_capacity(2 * segments * rings);
+    let mut triangles = vec_with_capacity(2 * segments * rings, "segments")?;
     for j in 0..segments {
         triangles.push([0, ring(1, j), ring(1, j + 1)]);
         triangles.push([south, ring(rings, j + 1), ring(rings, j)]);
@@ -698,10 +700,9 @@ fn tube<T: Real>(
     at_least(segments, 3, "segments", "must be at least 3")?;
     at_least(sides, 3, "sides", "must be at least 3")?;
     indexable(segments.checked_mul(sides), "segments")?;
-    let mut vertices = Vec::with_capacity(segments * sides);
-    let frames: Vec<_> = (0..segments)
-        .map(|i| curve(TAU * i as f64 / segments as f64))
-        .collect();
+    let mut vertices = vec_with_capacity(segments * sides, "segments")?;
+    let mut frames = vec_with_capacity(segments, "segments")?;
+    frames.extend((0..segments).map(|i| curve(TAU * i as f64 / segments as f64)));
     // A normal per segment: Frenet-free, from a fixed axis least aligned with the first tangent,
     // then carried along by projecting out each new tangent.
     let first_tangent = frames[0].1.normalize();
@@ -740,7 +741,7 @@ fn tube<T: Real>(
             (i * sides + j % sides) as u32
         }
     };
-    let mut triangles = Vec::with_capacity(2 * segments * sides);
+    let mut triangles = vec_with_capacity(2 * segments * sides, "segments")?;
     for i in 0..segments {
         for j in 0..sides {
             let (a, b, c, d) = (

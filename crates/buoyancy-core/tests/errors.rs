@@ -547,3 +547,78 @@ fn f32_matches_f64() {
         }
     }
 }
+
+/// Sizes whose bytes overflow `usize` are out of memory on every machine: an error naming the
+/// parameter, not the allocator's abort.
+#[test]
+fn requests_beyond_the_address_space_are_out_of_memory() {
+    let sea = buoyancy_core::waves::SeaState {
+        spectrum: buoyancy_core::waves::Spectrum::PiersonMoskowitz,
+        significant_height: 1.0,
+        peak_period: 8.0,
+        direction: Vector3::x(),
+        spreading: None,
+        components: usize::MAX / 4,
+        seed: 0,
+    };
+    let error =
+        buoyancy_core::waves::AiryWaves::<f64>::from_sea_state(&sea, &Water::default(), None)
+            .unwrap_err();
+    assert!(
+        matches!(
+            error,
+            Error::OutOfMemory {
+                parameter: "components",
+                bytes: usize::MAX
+            }
+        ),
+        "{error:?}"
+    );
+    assert!(
+        error
+            .to_string()
+            .starts_with("components asks for 18.447 EB of memory, more than can be allocated"),
+        "{error}"
+    );
+}
+
+#[cfg(unix)]
+#[test]
+fn a_fifo_or_a_device_is_not_read() {
+    let folder = std::env::temp_dir().join(format!("buoyancy-fifo-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let fifo = folder.join("hull.stl");
+    let _ = std::fs::remove_file(&fifo);
+    // A FIFO nobody writes to: opening it would wait for ever.
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    if made.is_ok_and(|s| s.success()) {
+        let error = buoyancy_core::io::load::<f64>(&fifo).unwrap_err();
+        assert!(
+            matches!(
+                error,
+                Error::Io {
+                    kind: std::io::ErrorKind::InvalidInput,
+                    ..
+                }
+            ),
+            "{error:?}"
+        );
+        assert!(error.to_string().contains("not a regular file"), "{error}");
+    }
+    let zero = folder.join("zero.stl");
+    let _ = std::fs::remove_file(&zero);
+    std::os::unix::fs::symlink("/dev/zero", &zero).unwrap();
+    let error = buoyancy_core::io::load::<f64>(&zero).unwrap_err();
+    assert!(error.to_string().contains("not a regular file"), "{error}");
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn an_obj_that_is_not_text_is_a_parse_error() {
+    let path = std::env::temp_dir().join(format!("buoyancy-garbage-{}.obj", std::process::id()));
+    let bytes: Vec<u8> = (0..=255u8).cycle().take(2048).collect();
+    std::fs::write(&path, bytes).unwrap();
+    let error = buoyancy_core::io::load::<f64>(&path).unwrap_err();
+    std::fs::remove_file(&path).unwrap();
+    assert!(matches!(error, Error::Parse { .. }), "{error:?}");
+}

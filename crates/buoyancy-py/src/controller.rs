@@ -2,7 +2,8 @@
 //! (`buoyancy_core::controller`), for any engine that can hand over its bodies' states as NumPy
 //! arrays: one call per step for every body, with the interpreter lock released.
 
-use std::sync::{Arc, Mutex};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex, MutexGuard, TryLockError};
 
 use buoyancy_core::controller::{
     BodyOptions, BodyState, Command, Controller, DampingResolution, Part, Settings, SharedSurface,
@@ -12,7 +13,7 @@ use buoyancy_core::waves::WaterSurface;
 use buoyancy_core::{DampingCoefficients, Error, Method, Pose, Water};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2};
-use pyo3::exceptions::{PyIndexError, PyTypeError};
+use pyo3::exceptions::{PyIndexError, PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple};
 
@@ -438,9 +439,11 @@ fn core_parts(py: Python<'_>, parts: &mut [GivenPart], bodies: &[Vec<GivenPart>]
 /// into the freed number. World frame, SI units, torques about each body's center of mass;
 /// quaternions ``(x, y, z, w)``.
 ///
-/// :meth:`step` releases the interpreter lock, so other Python threads run meanwhile; a
-/// controller serves one thread at a time (a call on it from another thread during a step raises
-/// ``RuntimeError``).
+/// :meth:`step` releases the interpreter lock, so other Python threads run meanwhile. A
+/// controller may be shared by threads: it serves one call at a time, and a call from another
+/// thread during a step waits for it (without the interpreter lock). A call from within its own
+/// step (a surface function of its water calling back into it) raises ``RuntimeError``. A
+/// controller does not pickle (it is one simulation's running state); its meshes and water do.
 ///
 /// Examples
 /// --------
@@ -487,8 +490,87 @@ fn core_parts(py: Python<'_>, parts: &mut [GivenPart], bodies: &[Vec<GivenPart>]
 /// 0.5
 /// >>> round(controller.report(cube).submerged_volume, 3)  # m³, 0.5 in still water
 /// 0.599
-#[pyclass(module = "buoyancy", name = "Controller")]
+#[pyclass(frozen, module = "buoyancy", name = "Controller")]
 pub struct PyController {
+    state: Mutex<ControllerState>,
+    /// The thread holding `state` (see [`thread_number`]), 0 when none does.
+    owner: AtomicU64,
+}
+
+impl PyController {
+    /// The controller's state, for this thread alone until the guard is dropped. Another
+    /// thread's call waits for it, with the interpreter lock released (the holder may need the
+    /// interpreter: a step on a surface function calls it). A call from within the holder's
+    /// own work (the surface function calling back into its controller) is a `RuntimeError`,
+    /// where waiting would never end.
+    fn lock(&self, py: Python<'_>) -> PyResult<StateGuard<'_>> {
+        let me = thread_number();
+        loop {
+            match self.state.try_lock() {
+                Ok(state) => return Ok(StateGuard::new(state, &self.owner, me)),
+                // A panic while held (reported as a `PanicException`) leaves the state as the
+                // core left it: every core operation keeps it consistent.
+                Err(TryLockError::Poisoned(poisoned)) => {
+                    return Ok(StateGuard::new(poisoned.into_inner(), &self.owner, me));
+                }
+                Err(TryLockError::WouldBlock) => {}
+            }
+            if self.owner.load(Ordering::Acquire) == me {
+                return Err(PyRuntimeError::new_err(
+                    "the Controller was called from within its own step (by the water's surface \
+                     function?): a step cannot be interrupted by another call on the same \
+                     controller",
+                ));
+            }
+            // Wait for the holder without the interpreter lock, then try again with it.
+            py.detach(|| drop(self.state.lock()));
+        }
+    }
+}
+
+/// A number for the calling thread, from 1, unique in the process.
+fn thread_number() -> u64 {
+    static NEXT: AtomicU64 = AtomicU64::new(1);
+    thread_local! {
+        static NUMBER: u64 = NEXT.fetch_add(1, Ordering::Relaxed);
+    }
+    NUMBER.with(|n| *n)
+}
+
+/// A held lock on a controller's state, which records the thread holding it.
+struct StateGuard<'a> {
+    state: MutexGuard<'a, ControllerState>,
+    owner: &'a AtomicU64,
+}
+
+impl<'a> StateGuard<'a> {
+    fn new(state: MutexGuard<'a, ControllerState>, owner: &'a AtomicU64, me: u64) -> Self {
+        owner.store(me, Ordering::Release);
+        StateGuard { state, owner }
+    }
+}
+
+impl Drop for StateGuard<'_> {
+    fn drop(&mut self) {
+        self.owner.store(0, Ordering::Release);
+    }
+}
+
+impl std::ops::Deref for StateGuard<'_> {
+    type Target = ControllerState;
+    fn deref(&self) -> &ControllerState {
+        &self.state
+    }
+}
+
+impl std::ops::DerefMut for StateGuard<'_> {
+    fn deref_mut(&mut self) -> &mut ControllerState {
+        &mut self.state
+    }
+}
+
+/// What a `Controller` holds, behind its lock.
+struct ControllerState {
     inner: Controller,
     /// The parts of each body as given, in the controller's numbering.
     parts: Vec<Vec<GivenPart>>,
@@ -499,7 +581,15 @@ pub struct PyController {
     sea: Option<Sea>,
 }
 
-impl PyController {
+impl ControllerState {
+    /// The controller's water, with its waves if it has any.
+    fn water<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyWater>> {
+        match &self.sea {
+            Some(sea) => Ok(sea.water.bind(py).clone()),
+            None => Bound::new(py, PyWater::still(self.inner.settings().water)),
+        }
+    }
+
     /// Makes the bodies float in `water` (its still plane, and its waves if it has any).
     fn set_sea(&mut self, water: &Bound<'_, PyWater>) -> PyResult<()> {
         let (inner, sea) = controller_water(water)?;
@@ -559,33 +649,35 @@ impl PyController {
         if let Some(resolution) = self::damping_resolution(damping_resolution)? {
             inner.set_damping_resolution(resolution);
         }
-        let mut controller = PyController {
+        let mut state = ControllerState {
             inner,
             parts: Vec::new(),
             states: Vec::new(),
             commands: Vec::new(),
             sea: None,
         };
-        controller.set_sea(&water)?;
-        Ok(controller)
+        state.set_sea(&water)?;
+        Ok(PyController {
+            state: Mutex::new(state),
+            owner: AtomicU64::new(0),
+        })
     }
 
     /// The controller's water, with its waves if it has any (a body's ``water`` overrides its
     /// still plane, density and gravity, not the waves). Setting it keeps :attr:`time`.
     #[getter]
     fn get_water<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyWater>> {
-        match &self.sea {
-            Some(sea) => Ok(sea.water.bind(py).clone()),
-            None => Bound::new(py, PyWater::still(self.inner.settings().water)),
-        }
+        self.lock(py)?.water(py)
     }
     #[setter]
-    fn set_water(&mut self, water: &Bound<'_, PyAny>) -> PyResult<()> {
+    fn set_water(&self, py: Python<'_>, water: &Bound<'_, PyAny>) -> PyResult<()> {
+        let mut guard = self.lock(py)?;
+        let this = &mut *guard;
         if water.is_none() {
             return Err(type_error("water", "a buoyancy.Water", water));
         }
         let water = water_argument(water.py(), Some(water))?;
-        self.set_sea(&water)
+        this.set_sea(&water)
     }
 
     /// The time of the water's waves, s: the bodies are floated on the surface at this time,
@@ -593,25 +685,29 @@ impl PyController {
     /// number (e.g. to restart a sea, or to match a world's clock). Kept when :attr:`water`
     /// changes; it also runs in still water.
     #[getter]
-    fn get_time(&self) -> f64 {
-        self.inner.time()
+    fn get_time(&self, py: Python<'_>) -> PyResult<f64> {
+        Ok(self.lock(py)?.inner.time())
     }
     #[setter]
-    fn set_time(&mut self, time: &Bound<'_, PyAny>) -> PyResult<()> {
+    fn set_time(&self, py: Python<'_>, time: &Bound<'_, PyAny>) -> PyResult<()> {
+        let mut guard = self.lock(py)?;
+        let this = &mut *guard;
         if time.is_none() {
             return Err(type_error("time", "a number (s)", time));
         }
-        self.inner.set_time(convert::time(Some(time), "time")?);
+        this.inner.set_time(convert::time(Some(time), "time")?);
         Ok(())
     }
 
     /// The controller's buoyancy method, as its canonical name (``"exact"``, …).
     #[getter]
-    fn get_method(&self) -> &'static str {
-        self.inner.settings().method.name()
+    fn get_method(&self, py: Python<'_>) -> PyResult<&'static str> {
+        Ok(self.lock(py)?.inner.settings().method.name())
     }
     #[setter]
-    fn set_method(&mut self, method: &Bound<'_, PyAny>) -> PyResult<()> {
+    fn set_method(&self, py: Python<'_>, method: &Bound<'_, PyAny>) -> PyResult<()> {
+        let mut guard = self.lock(py)?;
+        let this = &mut *guard;
         if method.is_none() {
             return Err(type_error(
                 "method",
@@ -619,19 +715,21 @@ impl PyController {
                 method,
             ));
         }
-        self.inner.settings_mut().method = convert::method(Some(method))?;
+        this.inner.settings_mut().method = convert::method(Some(method))?;
         Ok(())
     }
 
     /// The controller's damping coefficients.
     #[getter]
-    fn get_damping(&self) -> PyDampingCoefficients {
-        PyDampingCoefficients {
-            inner: self.inner.settings().damping,
-        }
+    fn get_damping(&self, py: Python<'_>) -> PyResult<PyDampingCoefficients> {
+        Ok(PyDampingCoefficients {
+            inner: self.lock(py)?.inner.settings().damping,
+        })
     }
     #[setter]
-    fn set_damping(&mut self, damping: &Bound<'_, PyAny>) -> PyResult<()> {
+    fn set_damping(&self, py: Python<'_>, damping: &Bound<'_, PyAny>) -> PyResult<()> {
+        let mut guard = self.lock(py)?;
+        let this = &mut *guard;
         if damping.is_none() {
             return Err(type_error(
                 "damping",
@@ -639,7 +737,7 @@ impl PyController {
                 damping,
             ));
         }
-        self.inner.settings_mut().damping = self::damping(Some(damping))?.unwrap_or_default();
+        this.inner.settings_mut().damping = self::damping(Some(damping))?.unwrap_or_default();
         Ok(())
     }
 
@@ -648,10 +746,18 @@ impl PyController {
     /// reduced copies it asks for (once per mesh).
     #[getter]
     fn get_damping_resolution(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-        resolution_object(py, self.inner.damping_resolution())
+        let guard = self.lock(py)?;
+        let this = &*guard;
+        resolution_object(py, this.inner.damping_resolution())
     }
     #[setter]
-    fn set_damping_resolution(&mut self, resolution: &Bound<'_, PyAny>) -> PyResult<()> {
+    fn set_damping_resolution(
+        &self,
+        py: Python<'_>,
+        resolution: &Bound<'_, PyAny>,
+    ) -> PyResult<()> {
+        let mut guard = self.lock(py)?;
+        let this = &mut *guard;
         let Some(resolution) = self::damping_resolution(Some(resolution))? else {
             return Err(type_error(
                 "damping_resolution",
@@ -659,7 +765,7 @@ impl PyController {
                 resolution,
             ));
         };
-        self.inner.set_damping_resolution(resolution);
+        this.inner.set_damping_resolution(resolution);
         Ok(())
     }
 
@@ -670,16 +776,18 @@ impl PyController {
         py: Python<'_>,
         index: &Bound<'_, PyAny>,
     ) -> PyResult<Py<PyAny>> {
-        let i = self.body(index)?;
-        let resolution = self
+        let guard = self.lock(py)?;
+        let this = &*guard;
+        let i = this.body(index)?;
+        let resolution = this
             .inner
             .body_damping_resolution(i)
             .unwrap_or_else(|| unreachable!("body {i} was checked to exist"));
         resolution_object(py, resolution)
     }
 
-    fn __len__(&self) -> usize {
-        self.inner.len()
+    fn __len__(&self, py: Python<'_>) -> PyResult<usize> {
+        Ok(self.lock(py)?.inner.len())
     }
 
     /// A controller does not pickle: it is the running books of a simulation (each body's
@@ -694,15 +802,17 @@ impl PyController {
     }
 
     fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
-        let water = self.get_water(py)?.repr()?;
-        let time = match self.sea {
-            Some(_) => format!(", time={}", crate::format::g(self.inner.time())),
+        let guard = self.lock(py)?;
+        let this = &*guard;
+        let water = this.water(py)?.repr()?;
+        let time = match this.sea {
+            Some(_) => format!(", time={}", crate::format::g(this.inner.time())),
             None => String::new(),
         };
         Ok(format!(
             "Controller({} bodies, water={water}, method='{}'{time})",
-            self.inner.len(),
-            self.get_method()
+            this.inner.len(),
+            this.inner.settings().method.name()
         ))
     }
 
@@ -747,7 +857,7 @@ impl PyController {
         text_signature = "(self, parts, method=None, water=None, damping=None, damping_resolution=None)"
     )]
     fn add(
-        &mut self,
+        &self,
         py: Python<'_>,
         parts: &Bound<'_, PyAny>,
         method: Option<&Bound<'_, PyAny>>,
@@ -755,13 +865,15 @@ impl PyController {
         damping: Option<&Bound<'_, PyAny>>,
         damping_resolution: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<usize> {
+        let mut guard = self.lock(py)?;
+        let this = &mut *guard;
         let mut given = given_parts(parts)?;
         let options = body_options(method, water, damping, damping_resolution)?;
-        let index = self
+        let index = this
             .inner
-            .add(core_parts(py, &mut given, &self.parts), options)
+            .add(core_parts(py, &mut given, &this.parts), options)
             .map_err(|e| to_py(e, Some("parts")))?;
-        self.parts.push(given);
+        this.parts.push(given);
         Ok(index)
     }
 
@@ -773,7 +885,7 @@ impl PyController {
     )]
     #[allow(clippy::too_many_arguments)]
     fn replace(
-        &mut self,
+        &self,
         py: Python<'_>,
         index: &Bound<'_, PyAny>,
         parts: &Bound<'_, PyAny>,
@@ -782,13 +894,15 @@ impl PyController {
         damping: Option<&Bound<'_, PyAny>>,
         damping_resolution: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<()> {
-        let i = self.body(index)?;
+        let mut guard = self.lock(py)?;
+        let this = &mut *guard;
+        let i = this.body(index)?;
         let mut given = given_parts(parts)?;
         let options = body_options(method, water, damping, damping_resolution)?;
-        self.inner
-            .replace(i, core_parts(py, &mut given, &self.parts), options)
+        this.inner
+            .replace(i, core_parts(py, &mut given, &this.parts), options)
             .map_err(|e| to_py(e, Some("parts")))?;
-        self.parts[i] = given;
+        this.parts[i] = given;
         Ok(())
     }
 
@@ -797,17 +911,15 @@ impl PyController {
     /// back off the body. Add it even to a body the engine does not move by forces (the share
     /// is there: with rapier, make the body dynamic for the time of the addition). The last
     /// body takes the number ``index``. ``IndexError`` if there is no such body.
-    fn remove<'py>(
-        &mut self,
-        py: Python<'py>,
-        index: &Bound<'_, PyAny>,
-    ) -> PyResult<TakeBack<'py>> {
-        let i = self.body(index)?;
-        let command = self
+    fn remove<'py>(&self, py: Python<'py>, index: &Bound<'_, PyAny>) -> PyResult<TakeBack<'py>> {
+        let mut guard = self.lock(py)?;
+        let this = &mut *guard;
+        let i = this.body(index)?;
+        let command = this
             .inner
             .remove(i)
             .unwrap_or_else(|| unreachable!("body {i} was checked to exist"));
-        self.parts.swap_remove(i);
+        this.parts.swap_remove(i);
         Ok((
             PyArray1::from_slice(py, command.add_force.as_slice()),
             PyArray1::from_slice(py, command.add_torque.as_slice()),
@@ -817,17 +929,21 @@ impl PyController {
     /// Tells the controller that the engine's forces and torques of body ``index`` were reset,
     /// so that its share is zero now; the next :meth:`step` adds the whole share again.
     /// ``IndexError`` if there is no such body.
-    fn forget_applied(&mut self, index: &Bound<'_, PyAny>) -> PyResult<()> {
-        let i = self.body(index)?;
-        self.inner.forget_applied(i);
+    fn forget_applied(&self, py: Python<'_>, index: &Bound<'_, PyAny>) -> PyResult<()> {
+        let mut guard = self.lock(py)?;
+        let this = &mut *guard;
+        let i = this.body(index)?;
+        this.inner.forget_applied(i);
         Ok(())
     }
 
     /// What the last :meth:`step` computed and applied for body ``index``
     /// (a :class:`FloatReport`). ``IndexError`` if there is no such body.
-    fn report(&self, index: &Bound<'_, PyAny>) -> PyResult<PyFloatReport> {
-        let i = self.body(index)?;
-        let inner = *self
+    fn report(&self, py: Python<'_>, index: &Bound<'_, PyAny>) -> PyResult<PyFloatReport> {
+        let guard = self.lock(py)?;
+        let this = &*guard;
+        let i = this.body(index)?;
+        let inner = *this
             .inner
             .report(i)
             .unwrap_or_else(|| unreachable!("body {i} was checked to exist"));
@@ -881,7 +997,9 @@ impl PyController {
         Bound<'py, PyArray1<f64>>,
         PyEquilibrium,
     )> {
-        let i = self.body(index)?;
+        let guard = self.lock(py)?;
+        let this = &*guard;
+        let i = this.body(index)?;
         let pose = Pose::from_parts(
             Translation3::from(convert::vector3(position, "position")?),
             convert::rotation(quaternion, "quaternion")?,
@@ -901,7 +1019,7 @@ impl PyController {
             motion: Default::default(),
             sleeping: false,
         };
-        let controller = &self.inner;
+        let controller = &this.inner;
         let rest = py
             .detach(|| controller.rest(i, &state))
             .unwrap_or_else(|| unreachable!("body {i} was checked to exist"))
@@ -930,8 +1048,10 @@ impl PyController {
             Bound<'py, PyArray1<f64>>,
         )>,
     > {
-        let i = self.body(index)?;
-        Ok(self.parts[i]
+        let guard = self.lock(py)?;
+        let this = &*guard;
+        let i = this.body(index)?;
+        Ok(this.parts[i]
             .iter()
             .map(|p| {
                 let q = p.rotation.coords;
@@ -1017,7 +1137,7 @@ impl PyController {
     )]
     #[allow(clippy::too_many_arguments)]
     fn step<'py>(
-        &mut self,
+        &self,
         py: Python<'py>,
         dt: &Bound<'py, PyAny>,
         positions: &Bound<'py, PyAny>,
@@ -1034,6 +1154,8 @@ impl PyController {
         dynamic: &Bound<'py, PyAny>,
         sleeping: &Bound<'py, PyAny>,
     ) -> PyResult<StepResult<'py>> {
+        let mut guard = self.lock(py)?;
+        let this = &mut *guard;
         let dt = convert::real(dt, "dt")?;
         if !(dt.is_finite() && dt >= 0.0) {
             return Err(arg_error(
@@ -1041,7 +1163,7 @@ impl PyController {
                 format!("must be finite and non-negative (s), got {dt}"),
             ));
         }
-        let n = self.inner.len();
+        let n = this.inner.len();
         let row3: &[&[usize]] = &[&[3]];
         let scalar: &[&[usize]] = &[&[]];
         let vectors = "one 3-vector per body";
@@ -1135,10 +1257,10 @@ impl PyController {
             sleeping: sleeping.values(),
         };
         // A Python surface may fail: the step is then undone, as if it had not been called.
-        let function = self.sea.as_ref().and_then(|sea| sea.function.clone());
-        let before = function.as_ref().map(|_| self.inner.clone());
+        let function = this.sea.as_ref().and_then(|sea| sea.function.clone());
+        let before = function.as_ref().map(|_| this.inner.clone());
         let (controller, states, commands) =
-            (&mut self.inner, &mut self.states, &mut self.commands);
+            (&mut this.inner, &mut this.states, &mut this.commands);
         py.detach(|| {
             columns.read(n, states)?;
             commands.resize(n, Command::default());
@@ -1148,7 +1270,7 @@ impl PyController {
         .map_err(|rejected: crate::step_inputs::Rejected| rejected.into_py())?;
         if let Some(failure) = function.and_then(|f| f.take_failure()) {
             if let Some(before) = before {
-                self.inner = before;
+                this.inner = before;
             }
             return Err(Failure::Function(failure).into_py(Some("water")));
         }

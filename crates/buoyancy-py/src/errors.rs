@@ -7,8 +7,8 @@ use std::io::ErrorKind;
 use buoyancy_core::Error;
 use pyo3::create_exception;
 use pyo3::exceptions::{
-    PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyPermissionError, PyTypeError,
-    PyValueError,
+    PyFileNotFoundError, PyIsADirectoryError, PyMemoryError, PyOSError, PyPermissionError,
+    PyTypeError, PyValueError,
 };
 use pyo3::prelude::*;
 
@@ -47,6 +47,8 @@ pub fn type_name(obj: &Bound<'_, PyAny>) -> String {
 /// * a parameter out of range (shape, water, damping) is a `ValueError` naming the parameter;
 /// * a mesh that cannot be used, or a file that cannot be parsed, is a [`MeshError`], with the
 ///   core's report of a broken mesh as its attributes (`defects`, …);
+/// * a request whose memory cannot be allocated is a `MemoryError` naming `argument` (else the
+///   core's parameter);
 /// * a file that cannot be read is the `OSError` subclass of its kind (`FileNotFoundError`,
 ///   `PermissionError`, `IsADirectoryError`, else `OSError`), and one of an unknown format a
 ///   `ValueError`;
@@ -59,6 +61,11 @@ pub fn to_py(e: Error, argument: Option<&str>) -> PyErr {
         | Error::InvalidWater { parameter, reason }
         | Error::InvalidDamping { parameter, reason }
         | Error::InvalidLoading { parameter, reason } => return arg_error(parameter, reason),
+        // The core names its parameter; the message names the argument it came from.
+        Error::OutOfMemory { parameter, .. } => {
+            let name = argument.unwrap_or(parameter);
+            return PyMemoryError::new_err(e.to_string().replace(parameter, name));
+        }
         _ => {}
     }
     let message = match argument {

@@ -82,7 +82,8 @@ impl SeaOrigin {
             .map_err(|e| {
                 // The core names its parameter; the error names the argument it came from.
                 let argument = match e {
-                    Error::InvalidSurface { parameter, .. } => Some(match parameter {
+                    Error::InvalidSurface { parameter, .. }
+                    | Error::OutOfMemory { parameter, .. } => Some(match parameter {
                         "significant_height" => "hs",
                         "peak_period" => "tp",
                         "components" => "n",

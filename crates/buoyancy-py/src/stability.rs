@@ -46,6 +46,7 @@ fn solver_error(e: Error, python_names: &[(&str, &str)]) -> PyErr {
         Error::InvalidLoading { .. } => hydrostatics::loading_error(e),
         Error::InvalidMass { reason } => arg_error("mass", reason),
         Error::InvalidDraft { index, .. } => arg_error(&format!("drafts[{index}]"), e),
+        Error::OutOfMemory { parameter, .. } => to_py(e, Some(&rename(parameter))),
         Error::NoConvergence { .. } => PyRuntimeError::new_err(e.to_string()),
         e => to_py(e, None),
     }

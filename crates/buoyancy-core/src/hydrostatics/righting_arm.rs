@@ -218,7 +218,7 @@ impl<T: Real> Mesh<T> {
             }
         };
         let mut solver = Solver::new(self, water, loading, options)?;
-        let mut points = Vec::with_capacity(heels.len());
+        let mut points = crate::error::vec_with_capacity(heels.len(), "heels")?;
         let mut height = None;
         let mut flooding = None;
         for &heel in heels {

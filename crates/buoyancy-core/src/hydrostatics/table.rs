@@ -258,7 +258,7 @@ impl<T: Real> Mesh<T> {
             .with_longitudinal_axis(axis)?;
         let density = water.density();
         let hundred = T::from_f64_lossy(100.0);
-        let mut rows = Vec::with_capacity(drafts.len());
+        let mut rows = crate::error::vec_with_capacity(drafts.len(), "drafts")?;
         for &draft in drafts {
             let pose = Pose::from_parts(Translation3::from(-n * (bottom + draft)), rotation);
             // Mesh::hydrostatics refuses a pose where the water reaches an opening.

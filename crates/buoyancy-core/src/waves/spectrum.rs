@@ -1,8 +1,6 @@
 //! Irregular seas from a wave spectrum: Pierson–Moskowitz and JONSWAP, as a sum of Airy
 //! components drawn deterministically from a seed.
 
-use alloc::vec::Vec;
-
 use nalgebra::{UnitQuaternion, Vector3};
 
 use super::{AiryComponent, AiryWaves, horizontal_direction};
@@ -176,7 +174,7 @@ impl<T: Real> AiryWaves<T> {
         let (lo, hi) = (peak * f(0.5), peak * f(4.0));
         let bin = (hi - lo) / f(sea.components as f64);
         let mut random = SplitMix64(sea.seed);
-        let mut components = Vec::with_capacity(sea.components);
+        let mut components = crate::error::vec_with_capacity(sea.components, "components")?;
         for i in 0..sea.components {
             let omega = lo + bin * (f(i as f64) + f(random.unit()));
             let amplitude = (f(2.0) * sea.density(omega) * bin).sqrt();
