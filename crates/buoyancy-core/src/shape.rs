@@ -210,8 +210,10 @@ pub fn torus<T: Real>(
 /// paper's torus knot).
 ///
 /// # Errors
-/// [`Error::InvalidShape`] if `p` or `q` is zero, a radius is not finite and positive,
-/// `segments < 3`, `sides < 3`, or there are too many vertices for `u32` indices.
+/// [`Error::InvalidShape`] if `p` or `q` is zero, `p` and `q` have a common factor (the curve
+/// would run over itself `gcd(p, q)` times), a radius is not finite and positive, the tube is
+/// too thick for the curve (it would run into itself: see [`tube_fits`]), `segments < 3`,
+/// `sides < 3`, or there are too many vertices for `u32` indices.
 pub fn torus_knot<T: Real>(
     p: u32,
     q: u32,
@@ -222,8 +224,16 @@ pub fn torus_knot<T: Real>(
 ) -> Result<Shape<T>, Error> {
     at_least(p as usize, 1, "p", "must be at least 1")?;
     at_least(q as usize, 1, "q", "must be at least 1")?;
+    if greatest_common_divisor(p, q) > 1 {
+        return Err(Error::InvalidShape {
+            parameter: "q",
+            reason: "must have no common factor with p: a (p, q) torus knot with gcd(p, q) = d \
+                     > 1 runs over the same curve d times",
+        });
+    }
     positive(radius, "radius")?;
     positive(tube_radius, "tube_radius")?;
+    let samples = (64 * p.max(q) as usize).clamp(1024, 8192);
     let (p, q) = (p as f64, q as f64);
     let point = |u: f64| {
         let r = radius * (2.0 + libm::cos(q * u)) / 2.0;
@@ -233,10 +243,50 @@ pub fn torus_knot<T: Real>(
             radius * libm::sin(q * u) / 2.0,
         )
     };
+    if !tube_fits(&point, samples, tube_radius) {
+        return Err(Error::InvalidShape {
+            parameter: "tube_radius",
+            reason: "is too large for the knot: the tube would run into itself (for p = 2, \
+                     q = 3 it must stay under 0.41 times the radius)",
+        });
+    }
     tube(segments, sides, tube_radius, move |u| {
         // Central differences: the tangent is only needed up to scale.
         let du = 1e-4;
         (point(u), point(u + du) - point(u - du))
+    })
+}
+
+/// The greatest common divisor of `a` and `b` (Euclid).
+fn greatest_common_divisor(mut a: u32, mut b: u32) -> u32 {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
+}
+
+/// Whether a tube of radius `r` about the closed curve `point(u)`, `u ∈ [0, 2π)`, stays clear of
+/// itself, judged on `samples` points of the curve: any two points further apart along the
+/// curve than half the tube's circumference, `π·r`, must be at least `2r` apart in space. (On
+/// a circle of radius `ρ ≥ r`, two points `π·r` apart along it are `2ρ·sin(πr/2ρ) ≥ 2r`
+/// apart, so the test also bounds the curvature: `r ≤ ρ`.)
+fn tube_fits(point: &impl Fn(f64) -> Vector3<f64>, samples: usize, r: f64) -> bool {
+    let points: Vec<Vector3<f64>> = (0..samples)
+        .map(|k| point(TAU * k as f64 / samples as f64))
+        .collect();
+    // Arc length from the first point to each, along the polygon, and the whole length.
+    let mut arc = Vec::with_capacity(samples);
+    let mut length = 0.0;
+    for k in 0..samples {
+        arc.push(length);
+        length += (points[(k + 1) % samples] - points[k]).norm();
+    }
+    let (half_turn, diameter) = (core::f64::consts::PI * r, 2.0 * r);
+    (0..samples).all(|i| {
+        (i + 1..samples).all(|j| {
+            let along = arc[j] - arc[i];
+            along.min(length - along) < half_turn || (points[j] - points[i]).norm() >= diameter
+        })
     })
 }
 
@@ -784,6 +834,14 @@ mod tests {
         assert_eq!(shape(torus_knot(0, 3, 1.0, 0.25, 80, 11)), "p");
         assert_eq!(shape(torus_knot(2, 0, 1.0, 0.25, 80, 11)), "q");
         assert_eq!(shape(torus_knot(2, 3, 1.0, 0.0, 80, 11)), "tube_radius");
+        // A common factor: the (4, 6) knot is the trefoil's curve run twice.
+        assert_eq!(shape(torus_knot(4, 6, 1.0, 0.1, 80, 11)), "q");
+        assert_eq!(shape(torus_knot(3, 3, 1.0, 0.1, 80, 11)), "q");
+        // The trefoil's tube fits up to 0.416 of the radius (sampled at 2,048 points).
+        assert!(torus_knot::<f64>(2, 3, 1.0, 0.41, 80, 11).is_ok());
+        assert_eq!(shape(torus_knot(2, 3, 1.0, 0.42, 80, 11)), "tube_radius");
+        assert_eq!(shape(torus_knot(2, 5, 1.0, 0.3, 80, 11)), "tube_radius");
+        assert!(torus_knot::<f64>(1, 1, 1.0, 0.9, 80, 11).is_ok());
         let message = alloc::string::ToString::to_string(&uv_sphere::<f64>(1.0, 2, 8).unwrap_err());
         assert_eq!(
             message,
