@@ -337,7 +337,10 @@ def test_load_unreadable_file_is_a_permission_error(tmp_path: pathlib.Path) -> N
         (lambda: shapes.torus_knot(p=0), "p: must be at least 1"),
         # Self-covering meshes (once accepted, their volume counted twice or more).
         (lambda: shapes.torus_knot(p=4, q=6), r"^q: must have no common factor with p: .* gcd\(p, q\) = d > 1"),
-        (lambda: shapes.torus_knot(tube_radius=0.5), "^tube_radius: is too large for the knot: the tube would run into"),
+        (
+            lambda: shapes.torus_knot(tube_radius=0.5),
+            "^tube_radius: is too large for the knot: the tube would run into",
+        ),
         (lambda: shapes.cube(100_000), "n: too large"),
     ],
 )

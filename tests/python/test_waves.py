@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 import pickle
 import threading
+import warnings
 
 import numpy as np
 import pytest
@@ -414,7 +415,8 @@ def test_froude_krylov_query_errors_name_the_argument(call, error: type[Exceptio
 def test_gerstner_crests_are_sharper_than_troughs() -> None:
     trochoid = buoyancy.GerstnerWaves([buoyancy.AiryWave(1.0, 12.0)])
     assert trochoid.steepness == pytest.approx(2 * math.pi / 12.0)
-    water = buoyancy.Water(waves=trochoid)
+    with pytest.warns(UserWarning, match=r"component 0 is steeper than a wave can be \(H/λ = 0.166667 > 1/7"):
+        water = buoyancy.Water(waves=trochoid)
     x = np.linspace(0, 12, 1200, endpoint=False)
     eta = water.elevation(np.c_[x, np.zeros_like(x), np.zeros_like(x)])
     assert eta.max() == pytest.approx(1.0, abs=1e-9) and eta.min() == pytest.approx(-1.0, abs=1e-9)
@@ -706,3 +708,33 @@ def test_a_wrong_surface_function_is_a_clear_error(function, error: type[Excepti
         cube.buoyancy_batch(np.zeros((1, 3)), None, water=water)
     with pytest.raises(error, match=f"^{match}" if error is ValueError else match):
         water.elevation(np.eye(3))
+
+
+def test_waves_beyond_the_breaking_limit_are_warned_of() -> None:
+    # Once accepted without a word: H/λ = 0.4, where the sea breaks at 1/7.
+    with pytest.warns(UserWarning, match=r"^waves: component 1 is steeper than a wave can be \(H/λ = 0.4 > 1/7"):
+        buoyancy.Water(waves=buoyancy.Waves([buoyancy.AiryWave(0.1, 20.0), buoyancy.AiryWave(1.0, 5.0)]))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        buoyancy.Water(waves=buoyancy.AiryWave(0.5, 7.1))  # H/λ = 0.141: no warning
+
+
+def test_a_seabed_in_the_trough_is_an_error() -> None:
+    components = [buoyancy.AiryWave(1.0, 20.0), buoyancy.AiryWave(0.5, 30.0)]
+    with pytest.raises(ValueError, match="^depth: .*greater than the deepest trough the waves reach"):
+        buoyancy.Waves(components, depth=1.5)
+    assert buoyancy.Waves(components, depth=1.51).depth == 1.51
+
+
+def test_a_mesh_too_coarse_for_the_waves_is_warned_of() -> None:
+    # Edges of 14 m against a 5 m wave: sampled at the vertices, the wave is not seen.
+    coarse = shapes.cube().scaled(10.0)
+    assert coarse.longest_edge == pytest.approx(10 * 2**0.5)
+    water = buoyancy.Water(waves=buoyancy.AiryWave(0.1, 5.0))
+    with pytest.warns(UserWarning, match=r"longest edge, 14.1421 m, is more than half the shortest wavelength, 5 m"):
+        coarse.buoyancy(water=water)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        shapes.cube(40).scaled(10.0).buoyancy(water=water)  # edges of 0.35 m
+        with pytest.raises(UserWarning):
+            coarse.buoyancy(water=water)

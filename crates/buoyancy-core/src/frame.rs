@@ -80,6 +80,27 @@ impl<T: Real> Frame<T> {
         ]
     }
 
+    /// For a body whose bounding sphere lies wholly under the plane, the same frame with the
+    /// centroid two bounding radii under it; else itself. Every method then finds the body
+    /// submerged all over, as it is, and its sums lose no digits to the depth: a constant added
+    /// to the pressure changes neither the force nor the torque on a closed surface
+    /// (`∮ n dA = 0`, `∮ r × n dA = 0`, which the methods' rules integrate exactly), and the
+    /// submerged volume is the whole body. (Kept deep, the surface methods put a 1 m cube 10⁹ m
+    /// down with its center of buoyancy 82 m off.)
+    pub(crate) fn nearer_when_submerged(self, mesh: &Mesh<T>) -> Self {
+        let radius = mesh.bounding_radius;
+        let near = -(radius + radius);
+        if self.height + radius < T::zero() && self.height < near {
+            Frame {
+                height: near,
+                round_off: mesh.hierarchy.height_round_off(near),
+                ..self
+            }
+        } else {
+            self
+        }
+    }
+
     /// The projection of the center of mass onto the surface, world frame.
     pub(crate) fn surface_point(&self) -> Point3<T> {
         self.center_of_mass - self.normal * self.height

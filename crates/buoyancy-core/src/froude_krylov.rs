@@ -371,13 +371,17 @@ impl<T: Real> Sea<T> {
     /// The pressure, in units of `ρ·g`, at a point of height `z` above the still plane and
     /// horizontal position `q` at `time` (see the module documentation).
     fn pressure(&self, q: &Point3<T>, z: T, time: T) -> T {
+        (self.wave_part(q, z, time) - z).max(T::zero())
+    }
+
+    /// The wave part of [`pressure`](Self::pressure), in units of `ρ·g`: `Σ aᵢ·Kᵢ(z)·cos θᵢ`.
+    fn wave_part(&self, q: &Point3<T>, z: T, time: T) -> T {
         let below = z.min(T::zero());
-        let wave = self.waves.iter().fold(T::zero(), |sum, w| {
+        self.waves.iter().fold(T::zero(), |sum, w| {
             sum + w.amplitude
                 * pressure_ratio(w.wavenumber, below, self.depth)
                 * w.phase_at(&q.coords, time).cos()
-        });
-        (wave - z).max(T::zero())
+        })
     }
 }
 
@@ -437,11 +441,29 @@ impl<T: Real> Mesh<T> {
             waves: resolve(waves.components(), water, waves.depth())?,
             depth: waves.depth(),
         };
+        // A body whose bounding sphere lies below the still plane and every vertex under the
+        // surface: the pressure is positive all over, and its hydrostatic part is taken
+        // relative to the centroid's level, `−(z − h_c)`. The constant `−h_c` it leaves out
+        // changes neither the force nor the torque on the closed surface, and far below the
+        // surface it would keep the depth's digits and lose the body's.
+        let offset = if frame.height + self.bounding_radius < T::zero()
+            && heights.iter().all(|h| *h < T::zero())
+        {
+            frame.height
+        } else {
+            T::zero()
+        };
         // Pressure at a point relative to the centroid, mesh frame, in units of ρg.
         let pressure = |r: &Vector3<T>| {
-            let z = frame.normal_local.dot(r) + frame.height;
+            let local = frame.normal_local.dot(r);
+            let z = local + frame.height;
             let x = frame.center_of_mass + frame.rotation * r;
-            sea.pressure(&(x - frame.normal * z), z, time)
+            let q = x - frame.normal * z;
+            if offset == T::zero() {
+                sea.pressure(&q, z, time)
+            } else {
+                sea.wave_part(&q, z, time) - (local + (frame.height - offset))
+            }
         };
         let (mut force, mut torque) = (Vector3::zeros(), Vector3::zeros());
         let mut piece = |q: [Vector3<T>; 3]| {

@@ -312,6 +312,13 @@ impl<T: Real> Mesh<T> {
         self.reoriented
     }
 
+    /// The longest edge of the triangles, m: under waves sampled at the vertices, a wave shorter
+    /// than twice this is not seen between them (see
+    /// [`AiryWaves::shortest_wavelength`](crate::waves::AiryWaves::shortest_wavelength)).
+    pub fn longest_edge(&self) -> T {
+        self.longest_edge
+    }
+
     /// Largest distance of a vertex from the centroid, in m: the radius of a ball about the
     /// centroid that holds the mesh.
     pub fn bounding_radius(&self) -> T {

@@ -90,7 +90,7 @@ impl<T: Real> Mesh<T> {
         traversal: Traversal,
         parallel: bool,
     ) -> Result<Buoyancy<T>, Error> {
-        let frame = Frame::new(self, pose, water)?;
+        let frame = Frame::new(self, pose, water)?.nearer_when_submerged(self);
         let hierarchy = match traversal {
             Traversal::Auto => self.triangles.len() >= Traversal::CROSSOVER,
             Traversal::Scan => false,

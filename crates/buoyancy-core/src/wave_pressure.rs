@@ -140,12 +140,29 @@ impl<T: Real> Mesh<T> {
         check_time(time)?;
         let layer = Layer::of(surface, water, &frame, self.bounding_radius, time);
         if layer.is_some_and(|l| l.mid == T::zero() && l.reach == T::zero()) {
+            let frame = frame.nearer_when_submerged(self);
             return self
                 .surface(&frame, water, Method::ExactSurface, true, parallel)
                 .checked();
         }
-        let (heights, wet) =
-            self.heights_in_waves(&frame, water, surface, time, layer, parallel)?;
+        // A body whose bounding sphere lies below the still plane gets its heights relative to
+        // its centroid's level: far below the surface, `n·x − level − η` would keep the depth's
+        // digits and lose the body's (a 1 m cube 10⁹ m down: its center of buoyancy 0.3 m off).
+        let reference = if frame.height + self.bounding_radius < T::zero() {
+            frame.height
+        } else {
+            T::zero()
+        };
+        let (mut heights, wet) =
+            self.heights_in_waves(&frame, water, surface, time, layer, parallel, reference)?;
+        if reference != T::zero() {
+            if heights.iter().all(|h| *h + reference < T::zero()) {
+                return self.submerged_in_waves(&frame, water, &heights).checked();
+            }
+            for h in &mut heights {
+                *h += reference;
+            }
+        }
         let n = frame.normal_local;
         let infinite = T::from_f64_lossy(f64::INFINITY);
         let walk = self.hierarchy.reduce_in_layer(
@@ -231,9 +248,43 @@ impl<T: Real> Mesh<T> {
         }
     }
 
-    /// The heights of the vertices above the free surface (see [`Mesh::heights_in_chunk`]),
-    /// and the linear sums of the wet vertices, chunk by chunk (in parallel with `parallel`),
-    /// merged in order.
+    /// Every vertex under the surface (its height `reference + heights[v]` below zero): the
+    /// whole surface is wet, and its sums are taken on the heights relative to `reference`. A
+    /// constant added to the pressure changes neither the force nor the torque on a closed
+    /// surface (`∮ n dA = 0`, `∮ r × n dA = 0`), nor the first moment of the submerged volume
+    /// (the whole body's), so the result is the one of the absolute heights, without their
+    /// round-off.
+    fn submerged_in_waves(
+        &self,
+        frame: &Frame<T>,
+        water: &Water<T>,
+        relative: &[T],
+    ) -> Buoyancy<T> {
+        let n = frame.normal_local;
+        let mut linear = LinearSums::zero();
+        for (h, terms) in relative.iter().zip(&self.vertex_terms) {
+            linear.add(*h, terms);
+        }
+        let mut quadratic = T::zero();
+        let mut wetted_area2 = T::zero();
+        for i in 0..self.leaf_triangles.len() {
+            quadratic += self.quadratic_term(&n, i, relative);
+            wetted_area2 += self.normals[i].double_area;
+        }
+        let [force6, torque24, moment24] = linear.surface_terms(&n);
+        let mut sums = SurfaceSums::zero();
+        sums.force6 = force6;
+        sums.torque24 = torque24;
+        sums.moment24 = moment24 - n * (quadratic * T::from_f64_lossy(0.5));
+        sums.counts.full = self.leaf_triangles.len();
+        sums.counts.wetted_area2 = wetted_area2;
+        self.wave_result(frame, water, sums)
+    }
+
+    /// The heights of the vertices above the free surface less `reference` (see
+    /// [`Mesh::heights_in_chunk`]), and the linear sums of the wet vertices, chunk by chunk (in
+    /// parallel with `parallel`), merged in order.
+    #[allow(clippy::too_many_arguments)]
     fn heights_in_waves(
         &self,
         frame: &Frame<T>,
@@ -242,10 +293,12 @@ impl<T: Real> Mesh<T> {
         time: T,
         layer: Option<Layer<T>>,
         parallel: bool,
+        reference: T,
     ) -> Result<(Vec<T>, LinearSums<T>), Error> {
         let mut heights = alloc::vec![T::zero(); self.vertices.len()];
         let chunk = |(k, out): (usize, &mut [T])| {
-            self.heights_in_chunk(k * VERTEX_CHUNK, out, frame, water, surface, time, layer)
+            let first = k * VERTEX_CHUNK;
+            self.heights_in_chunk(first, out, frame, water, surface, time, layer, reference)
         };
         #[cfg(feature = "rayon")]
         let chunks: Vec<Result<LinearSums<T>, Error>> = if parallel {
@@ -279,8 +332,9 @@ impl<T: Real> Mesh<T> {
     }
 
     /// For the vertices from `first` on, one per entry of `heights`: their heights
-    /// `n·x − level − η` above the free surface, and the linear sums (see `vertex_terms`) of
-    /// the wet ones (below the surface). A vertex more than the `layer`'s reach plus the
+    /// `n·x − level − η` above the free surface less `reference` (taken out before the sum, so
+    /// that a body far below keeps its digits), and the linear sums (see `vertex_terms`) of the
+    /// wet ones (below the surface) on the heights themselves. A vertex more than the `layer`'s reach plus the
     /// longest edge above its middle belongs to dry triangles only: it gets a positive height
     /// (its height above the layer) and the surface is not evaluated there. With no `layer`
     /// every vertex is evaluated.
@@ -294,8 +348,10 @@ impl<T: Real> Mesh<T> {
         surface: &dyn WaterSurface<T>,
         time: T,
         layer: Option<Layer<T>>,
+        reference: T,
     ) -> Result<LinearSums<T>, Error> {
         let n = &frame.normal_local;
+        let relative_height = frame.height - reference;
         let vertices = &self.vertices[first..first + heights.len()];
         let count = heights.len();
         let (mut points, mut evaluated) = (Vec::with_capacity(count), Vec::with_capacity(count));
@@ -307,11 +363,11 @@ impl<T: Real> Mesh<T> {
         let origin = frame.center_of_mass - frame.normal * frame.height;
         for (j, (h, v)) in heights.iter_mut().zip(vertices).enumerate() {
             let local = n.dot(v);
-            *h = local + frame.height;
+            *h = local + relative_height;
             if let Some((dry_above, reach, layer_height)) = layer {
                 let above_middle = local + layer_height;
                 if above_middle > dry_above {
-                    *h = above_middle - reach;
+                    *h = above_middle - reach - reference;
                     continue;
                 }
             }
@@ -330,8 +386,9 @@ impl<T: Real> Mesh<T> {
             }
             let h = &mut heights[j as usize];
             *h -= *eta;
-            if *h < T::zero() {
-                sums.add(*h, &self.vertex_terms[first + j as usize]);
+            let height = *h + reference;
+            if height < T::zero() {
+                sums.add(height, &self.vertex_terms[first + j as usize]);
             }
         }
         Ok(sums)

@@ -478,6 +478,13 @@ impl PyMesh {
         self.inner.bounding_radius()
     }
 
+    /// The longest edge of the triangles, m: waves shorter than twice it are not seen between
+    /// the vertices, where the surface is sampled (``buoyancy`` warns).
+    #[getter]
+    fn longest_edge(&self) -> f64 {
+        self.inner.longest_edge()
+    }
+
     /// Whether the faces were wound inward and have all been flipped.
     #[getter]
     fn was_reoriented(&self) -> bool {

@@ -2,9 +2,9 @@
 //! and the evaluations on them (buoyancy, elevations), whose failures name what failed.
 
 use buoyancy_core::nalgebra::Point3;
-use buoyancy_core::waves::WaterSurface;
+use buoyancy_core::waves::{AiryWaves, BREAKING_STEEPNESS, WaterSurface};
 use buoyancy_core::{Buoyancy, Error, Mesh, Method, Pose, Traversal, Water};
-use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::exceptions::{PyTypeError, PyUserWarning, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyType;
 
@@ -39,6 +39,14 @@ pub enum Failure {
     Core(Error),
     /// The Python surface function's.
     Function(FunctionFailure),
+    /// A warning turned into an error (`warnings.simplefilter("error")`).
+    Raised(PyErr),
+}
+
+/// A `UserWarning` with `message`, attributed to the caller's line.
+fn warn(py: Python<'_>, message: &str) -> PyResult<()> {
+    let message = std::ffi::CString::new(message).unwrap_or_default();
+    PyErr::warn(py, &py.get_type::<PyUserWarning>(), &message, 1)
 }
 
 impl Failure {
@@ -48,6 +56,7 @@ impl Failure {
     pub fn into_py(self, argument: Option<&str>) -> PyErr {
         match self {
             Failure::Core(e) => to_py(e, argument),
+            Failure::Raised(e) => e,
             Failure::Function(FunctionFailure::Raised(e)) => e,
             Failure::Function(FunctionFailure::Invalid(message)) => {
                 PyValueError::new_err(match argument {
@@ -103,6 +112,24 @@ impl WaterWaves {
             waves
                 .elevations(water, &[Point3::origin()], 0.0, &mut [0.0])
                 .map_err(|e| to_py(e, Some("waves")))?;
+        }
+        let components = match &surface {
+            Surface::Airy(waves) => Some(waves.inner.clone()),
+            Surface::Gerstner(waves) => Some(
+                AiryWaves::new(waves.inner.components().to_vec(), None)
+                    .map_err(|e| to_py(e, Some("waves")))?,
+            ),
+            _ => None,
+        };
+        if let Some((k, steepness)) = components.and_then(|w| w.steepest())
+            && steepness > BREAKING_STEEPNESS
+        {
+            let message = format!(
+                "waves: component {k} is steeper than a wave can be (H/λ = {} > 1/7, where waves \
+                 break): linear theory's surface and pressure are a look here, not the sea's",
+                crate::format::g(steepness)
+            );
+            warn(obj.py(), &message)?;
         }
         Ok(WaterWaves {
             given: obj.clone().unbind(),
@@ -165,6 +192,7 @@ impl WaterWaves {
         water: &Water<f64>,
         time: f64,
     ) -> Result<Buoyancy<f64>, Failure> {
+        self.check_sampling(mesh)?;
         if let Surface::Airy(waves) = &self.surface
             && waves.pressure == Pressure::FroudeKrylov
         {
@@ -175,6 +203,38 @@ impl WaterWaves {
         self.on_surface(water, |surface| {
             mesh.buoyancy_in_waves(pose, water, surface, time)
         })
+    }
+
+    /// Warns (a `UserWarning`, once per place in the caller's code) when the mesh's edges are
+    /// longer than half the shortest wavelength: the surface is evaluated at the vertices, and a
+    /// wave that short is not seen between them.
+    fn check_sampling(&self, mesh: &Mesh<f64>) -> Result<(), Failure> {
+        let shortest = match &self.surface {
+            Surface::Airy(waves) => waves.inner.shortest_wavelength(),
+            Surface::Gerstner(waves) => waves
+                .inner
+                .components()
+                .iter()
+                .map(|c| c.wavelength)
+                .reduce(f64::min),
+            _ => None,
+        };
+        match shortest {
+            Some(wavelength) if 2.0 * mesh.longest_edge() > wavelength => Python::attach(|py| {
+                warn(
+                    py,
+                    &format!(
+                        "waves: the mesh's longest edge, {} m, is more than half the shortest \
+                         wavelength, {} m: the surface is sampled at the vertices, and a wave that \
+                         short is not seen between them; use a finer mesh (or drop the short waves)",
+                        crate::format::g(mesh.longest_edge()),
+                        crate::format::g(wavelength)
+                    ),
+                )
+            })
+            .map_err(Failure::Raised),
+            _ => Ok(()),
+        }
     }
 
     /// The elevations at the still-plane `points` of `water` at `time` (s), m.

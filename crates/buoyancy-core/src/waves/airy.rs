@@ -58,14 +58,23 @@ pub struct AiryWaves<T: Real> {
     depth: Option<T>,
 }
 
+/// The steepness `H/λ` above which a wave breaks in deep water (Michell's limit, 1/7): see
+/// [`AiryWaves::steepest`].
+pub const BREAKING_STEEPNESS: f64 = 1.0 / 7.0;
+
 impl<T: Real> AiryWaves<T> {
     /// Waves of `components` over water of `depth` (m, from the still level to the bottom), or
     /// infinitely deep for `None`.
     ///
+    /// Waves steeper than [`BREAKING_STEEPNESS`] are accepted (linear theory does not stop
+    /// there, the sea does): [`steepest`](Self::steepest) finds them, and the Python bindings
+    /// warn.
+    ///
     /// # Errors
     /// [`Error::InvalidSurface`] naming what is wrong: a negative or non-finite amplitude, a
     /// wavelength that is not finite and positive, a non-finite direction or phase, a depth
-    /// that is not finite and positive.
+    /// that is not finite and positive, or one no deeper than the deepest trough the waves can
+    /// reach, the sum of their amplitudes (the seabed would stand in the trough).
     pub fn new(components: Vec<AiryComponent<T>>, depth: Option<T>) -> Result<Self, Error> {
         for c in &components {
             if !(c.amplitude.is_finite() && c.amplitude >= T::zero()) {
@@ -100,7 +109,43 @@ impl<T: Real> AiryWaves<T> {
                 reason: "the depth must be finite and positive (m), or None for deep water",
             });
         }
+        let deepest_trough = components
+            .iter()
+            .fold(T::zero(), |sum, c| sum + c.amplitude);
+        if let Some(h) = depth
+            && h <= deepest_trough
+        {
+            return Err(Error::InvalidSurface {
+                parameter: "depth",
+                reason: "the depth must be greater than the deepest trough the waves reach (the \
+                         sum of their amplitudes): the seabed would stand in the trough",
+            });
+        }
         Ok(AiryWaves { components, depth })
+    }
+
+    /// The steepest component and its steepness `H/λ = 2a/λ`, if there is a component. Above
+    /// [`BREAKING_STEEPNESS`] a real wave has broken: linear theory's surface and pressure are
+    /// then a choice of look, not of physics.
+    pub fn steepest(&self) -> Option<(usize, T)> {
+        self.components
+            .iter()
+            .map(|c| (c.amplitude + c.amplitude) / c.wavelength)
+            .enumerate()
+            .fold(None, |best, (k, s)| match best {
+                Some((_, b)) if b >= s => best,
+                _ => Some((k, s)),
+            })
+    }
+
+    /// The shortest wavelength of the components, m, if there is a component. A mesh whose
+    /// edges are longer than half of it samples that wave too coarsely at its vertices to see
+    /// it (the surface is evaluated at the vertices and taken as linear between them).
+    pub fn shortest_wavelength(&self) -> Option<T> {
+        self.components
+            .iter()
+            .map(|c| c.wavelength)
+            .fold(None, |best, w| Some(best.map_or(w, |b: T| b.min(w))))
     }
 
     /// The components.
@@ -352,16 +397,38 @@ mod tests {
     }
 
     #[test]
+    fn the_steepest_and_the_shortest_component() {
+        let mut steep = wave(5.0);
+        steep.amplitude = 0.5;
+        let waves = AiryWaves::new(vec![wave(20.0), steep, wave(8.0)], None).unwrap();
+        assert_eq!(waves.steepest(), Some((2, 0.25)));
+        assert_eq!(waves.shortest_wavelength(), Some(5.0));
+        let none = AiryWaves::<f64>::new(vec![], None).unwrap();
+        assert_eq!((none.steepest(), none.shortest_wavelength()), (None, None));
+    }
+
+    #[test]
     fn dispersion_tends_to_deep_and_shallow_water_limits() {
         let g = 9.81;
         let deep = AiryWaves::new(vec![wave(10.0)], Some(1000.0)).unwrap();
         let k = wave(10.0).wavenumber();
         assert!((deep.angular_frequency(0, g) - (g * k).sqrt()).abs() < 1e-12);
-        // Shallow water: ω ≈ k·√(g·h), within (k·h)²/6 relative.
-        let shallow = AiryWaves::new(vec![wave(1000.0)], Some(1.0)).unwrap();
+        // Shallow water: ω ≈ k·√(g·h), within (k·h)²/6 relative (the 1 m wave over 1.5 m).
+        let shallow = AiryWaves::new(vec![wave(1000.0)], Some(1.0)).err();
+        assert!(
+            matches!(
+                shallow,
+                Some(Error::InvalidSurface {
+                    parameter: "depth",
+                    ..
+                })
+            ),
+            "a seabed in the trough: {shallow:?}"
+        );
+        let shallow = AiryWaves::new(vec![wave(1000.0)], Some(1.5)).unwrap();
         let k = wave(1000.0).wavenumber();
-        let relative = shallow.angular_frequency(0, g) / (k * (g * 1.0f64).sqrt()) - 1.0;
-        assert!(relative.abs() < (k * 1.0).powi(2) / 6.0, "{relative}");
+        let relative = shallow.angular_frequency(0, g) / (k * (g * 1.5f64).sqrt()) - 1.0;
+        assert!(relative.abs() < (k * 1.5).powi(2) / 6.0, "{relative}");
     }
 
     #[test]

@@ -32,7 +32,7 @@ use alloc::vec::Vec;
 use nalgebra::{Point3, Vector3};
 
 pub(crate) use airy::pressure_ratio;
-pub use airy::{AiryComponent, AiryWaves, WaterMotion};
+pub use airy::{AiryComponent, AiryWaves, BREAKING_STEEPNESS, WaterMotion};
 pub use gerstner::GerstnerWaves;
 pub use grid::HeightGrid;
 pub use spectrum::{SeaState, Spectrum};
