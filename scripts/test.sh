@@ -39,10 +39,11 @@ rm -rf .venv-test
 "$PYTHON" -m venv .venv-test
 VPY=.venv-test/bin/python
 "$VPY" -m pip install --quiet --upgrade pip
-# trimesh for Mesh.from_trimesh's tests; Dask for examples/dask_sweep.py's; mypy (its stubtest)
+# hypothesis for the property suite (tests/python/test_properties.py); trimesh for
+# Mesh.from_trimesh's tests; Dask for examples/dask_sweep.py's; mypy (its stubtest)
 # and ruff for the checks after pytest (ruff within one minor version, whose formatting style is
 # fixed).
-"$VPY" -m pip install --quiet numpy pytest matplotlib trimesh 'mypy>=2.4' 'ruff~=0.17.6' \
+"$VPY" -m pip install --quiet numpy pytest hypothesis matplotlib trimesh 'mypy>=2.4' 'ruff~=0.17.6' \
   'dask[distributed]>=2024.1'
 # rapier's Python binding, for buoyancy.rapier (a prebuilt abi3 wheel); without it the rapier
 # tests skip, saying so.
