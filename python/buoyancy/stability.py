@@ -17,8 +17,9 @@ heel is right-handed about the longitudinal axis: with x forward and z up, it pu
 
 Exit status: 0 when the hull floats upright in a stable equilibrium with a range of positive
 stability; 1 when the results were written but a warning on stderr says otherwise (the
-equilibrium is not stable, the hull floats capsized, past 90° of heel, or ``GZ`` is not
-positive at any heel); 2 for an error, before anything is written (bad arguments, a file that
+equilibrium is not stable, the hull floats capsized, past 90° of heel, ``GZ`` is not
+positive at any heel, or an input looks to be in the wrong unit: a mesh in millimetres, a mass
+in tonnes, a density in t/m³, heels in radians); 2 for an error, before anything is written (bad arguments, a file that
 cannot be read, an output folder that cannot be written, a body that does not float, a solve
 that does not converge).
 """
@@ -31,6 +32,7 @@ import math
 import os
 import pathlib
 import sys
+import warnings as warnings_module
 from collections.abc import Sequence
 
 import numpy as np
@@ -66,6 +68,13 @@ TABLE_HEADINGS = {
     "tpc": ("TPC", ".4f"),
     "mct": ("MCT", ".2f"),
 }
+
+
+def extent(mesh: Mesh) -> str:
+    """The mesh's bounding box in its own frame, as ``extent 4 × 2 × 1 m``."""
+    vertices = np.asarray(mesh.vertices)
+    size = vertices.max(axis=0) - vertices.min(axis=0)
+    return "extent " + " × ".join(f"{s:.6g}" for s in size) + " m"
 
 
 def table_drafts(draft: float, height: float, rows: int) -> np.ndarray:
@@ -209,7 +218,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         epilog=(
             "Example: python -m buoyancy.stability hull.stl --mass 1200 --cog 0 0 0.3 --up z --out out/\n\n"
             "Exit status: 0 floats upright, stable, with positive GZ; 1 results written with a warning "
-            "(not stable, capsized, or no positive GZ); 2 an error, before anything is written."
+            "(not stable, capsized, no positive GZ, or units that look wrong); 2 an error, before anything is "
+            "written."
         ),
     )
     parser.add_argument("mesh", type=pathlib.Path, help="STL, OBJ or PLY file of the hull (metres)")
@@ -251,15 +261,27 @@ def main(argv: Sequence[str] | None = None) -> int:
     if problem is not None:
         print(f"error: {problem}", file=sys.stderr)
         return 2
+    # What the library warns of (units that look wrong: a mesh in millimetres, a mass in tonnes),
+    # printed as the command line's own warnings, once each.
+    noted: list[str] = []
     try:
         mesh = load(args.mesh, close_openings=args.close_openings)
+        # Before the solve, so that a failure can be read against the mesh's size.
+        print(f"{args.mesh}: {mesh.n_triangles:,} triangles, {extent(mesh)}, volume {mesh.volume:.6g} m³")
         water = Water(density=args.density, gravity=args.gravity, normal=up)
-        rest = mesh.equilibrium(args.mass, args.cog, water=water, axis=axis)
-        heels = np.arange(0.0, args.heel_max + 1e-9, args.heel_step)
-        trim = {"free_trim": False, "trim_deg": rest.trim} if args.fixed_trim else {}
-        curve = mesh.gz_curve(args.mass, args.cog, heels, axis=axis, water=water, **trim)
-        drafts = table_drafts(rest.draft, table_height(mesh, up), args.rows)
-        table = mesh.hydrostatic_table(drafts, water=water, axis=axis, center_of_mass=args.cog)
+        with warnings_module.catch_warnings(record=True) as caught:
+            warnings_module.simplefilter("always")
+            try:
+                rest = mesh.equilibrium(args.mass, args.cog, water=water, axis=axis)
+                heels = np.arange(0.0, args.heel_max + 1e-9, args.heel_step)
+                trim = {"free_trim": False, "trim_deg": rest.trim} if args.fixed_trim else {}
+                curve = mesh.gz_curve(args.mass, args.cog, heels, axis=axis, water=water, **trim)
+                drafts = table_drafts(rest.draft, table_height(mesh, up), args.rows)
+                table = mesh.hydrostatic_table(drafts, water=water, axis=axis, center_of_mass=args.cog)
+            finally:
+                for message in dict.fromkeys(str(w.message) for w in caught):
+                    noted.append(message)
+                    print(f"warning: {message}", file=sys.stderr)
     except (OSError, ValueError, RuntimeError, MemoryError) as error:
         message = str(error)
         if "open edges" in message and not args.close_openings:
@@ -270,7 +292,6 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"error: {message}", file=sys.stderr)
         return 2
 
-    print(f"{args.mesh}: {mesh.n_triangles:,} triangles, volume {mesh.volume:.6g} m³")
     print(
         f"water: {args.density:g} kg/m³, g = {args.gravity:g} m/s², up = mesh {args.up}, long axis = mesh {args.axis}"
     )
@@ -303,7 +324,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     found = warnings(rest, curve)
     for warning in found:
         print(f"warning: {warning}", file=sys.stderr)
-    return 1 if found else 0
+    return 1 if found or noted else 0
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@ square-log rule, and Mesh.buoyancy at the poses they return."""
 
 import math
 import pathlib
+import warnings
 
 import numpy as np
 import pytest
@@ -236,3 +237,22 @@ def test_cli_closes_openings(tmp_path: pathlib.Path, capsys: pytest.CaptureFixtu
         assert main([*args, axis, "--close-openings"]) == 0
         printed.append(capsys.readouterr().out)
     assert sum("the water reaches an opening at" in out for out in printed) == 1
+
+
+def test_inputs_in_unlikely_units_are_warned_of() -> None:
+    water = buoyancy.Water(density=1025.0, normal=(0, 0, 1))
+    millimetres = buoyancy.shapes.cube().scaled((4000.0, 2000.0, 1000.0))
+    with pytest.warns(UserWarning, match="units: the mesh spans 4.5826e3 m and holds 8.0000e9 m³") as caught:
+        with pytest.raises(RuntimeError, match="did not converge.*; but first check the units: the mesh spans"):
+            millimetres.equilibrium(3000.0, (0, 0, -200.0), water=water)
+    assert any("multiply it by 1000; if the mesh is in millimetres" in str(w.message) for w in caught)
+    box = buoyancy.shapes.cube().scaled((4.0, 2.0, 1.0))
+    with pytest.warns(UserWarning, match=r"the water's density is 1.025 kg/m³: if it is in t/m³"):
+        box.equilibrium(3.0, (0, 0, -0.2), water=buoyancy.Water(density=1.025, normal=(0, 0, 1)))
+    with pytest.warns(UserWarning, match="heel_deg: the heels reach only 0.5°"):
+        box.gz_curve(3000.0, (0, 0, -0.2), heel_deg=[0.0, 0.25, 0.5], water=water)
+    # Plausible input: no warning.
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        box.equilibrium(3000.0, (0, 0, -0.2), water=water)
+        box.gz_curve(3000.0, (0, 0, -0.2), heel_deg=[0.0, 10.0], water=water)

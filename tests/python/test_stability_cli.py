@@ -177,3 +177,30 @@ def test_an_open_hull_is_pointed_at_close_openings(tmp_path: pathlib.Path, capsy
     assert "run with --close-openings" in capsys.readouterr().err
     assert main([*args, "--close-openings"]) == 0
     assert "--close-openings" not in capsys.readouterr().err
+
+
+def test_a_hull_in_millimetres_is_told_so(tmp_path: pathlib.Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """The commonest CAD mistake: a 4 × 2 × 1 m box written in millimetres, its mass in kg. Once
+    "the equilibrium solver did not converge … raise max_iterations", a remedy that does not
+    help; now the extent comes first and the error says what to check."""
+    box = shapes.cube(2).scaled((4000.0, 2000.0, 1000.0)).translated((0, 0, 500.0))
+    path = tmp_path / "box_mm.obj"
+    lines = [f"v {x:.17g} {y:.17g} {z:.17g}" for x, y, z in box.vertices]
+    lines += [f"f {a + 1} {b + 1} {c + 1}" for a, b, c in box.faces]
+    path.write_text("\n".join(lines) + "\n")
+    code = main([str(path), "--mass", "2050", "--cog", "0", "0", "400", "--out", str(tmp_path / "out")])
+    captured = capsys.readouterr()
+    assert "extent 4000 × 2000 × 1000 m, volume 8e+09 m³" in captured.out
+    assert "warning: units: the mesh spans" in captured.err and "scale the mesh by 0.001" in captured.err
+    # Either the solve fails, and says to check the units, or it is written with the warning.
+    assert code in (1, 2)
+    if code == 2:
+        assert "but first check the units" in captured.err
+
+
+def test_heels_in_radians_are_warned_of(tmp_path: pathlib.Path, capsys: pytest.CaptureFixture[str]) -> None:
+    mesh = write_box(tmp_path / "box.obj")
+    radians = ["--heel-max", "1.5", "--heel-step", "0.1"]
+    code = main([str(mesh), "--mass", "2050", "--cog", "0", "0", "0.4", *radians, "--out", str(tmp_path / "out")])
+    assert code == 1
+    assert "warning: heel_deg: the heels reach only 1.5°" in capsys.readouterr().err

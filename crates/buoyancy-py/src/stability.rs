@@ -4,11 +4,12 @@
 
 use buoyancy_core::hydrostatics::{
     Equilibrium, EquilibriumOptions, GzCurve, HydrostaticRow, LoadingCondition, TableOptions, Trim,
+    UnitsWarning, units_warnings,
 };
 use buoyancy_core::nalgebra::{Point3, UnitQuaternion};
 use buoyancy_core::{Error, Water};
 use numpy::{PyArray1, PyArray2};
-use pyo3::exceptions::PyRuntimeError;
+use pyo3::exceptions::{PyRuntimeError, PyUserWarning};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -129,9 +130,48 @@ pub fn equilibrium(
     options: &EquilibriumOptions<f64>,
 ) -> PyResult<PyEquilibrium> {
     let mesh = mesh.core();
+    let units = warn_of_units(py, mesh, water, loading.mass())?;
     py.detach(|| mesh.equilibrium_with(water, loading, options))
         .map(|inner| PyEquilibrium { inner })
-        .map_err(|e| solver_error(e, &[]))
+        .map_err(|e| with_units(solver_error(e, &[]), &units))
+}
+
+/// `error` with what the units warnings said appended, when it is the solver's failure to
+/// converge (which a mesh in millimetres causes: its draft is nanometres).
+fn with_units(error: PyErr, units: &[UnitsWarning]) -> PyErr {
+    Python::attach(|py| {
+        if units.is_empty() || !error.is_instance_of::<PyRuntimeError>(py) {
+            return error;
+        }
+        let notes: Vec<String> = units.iter().map(|u| u.to_string()).collect();
+        PyRuntimeError::new_err(format!(
+            "{}; but first check the units: {}",
+            error.value(py),
+            notes.join("; ")
+        ))
+    })
+}
+
+/// Warns (a `UserWarning`) of each input unlikely to be in SI units (a mesh in millimetres, a
+/// density in t/m³, a mass in tonnes: the core's `units_warnings`), before a solve whose
+/// failure alone would not say why.
+fn warn_of_units(
+    py: Python<'_>,
+    mesh: &buoyancy_core::Mesh<f64>,
+    water: &Water<f64>,
+    mass: Option<f64>,
+) -> PyResult<Vec<UnitsWarning>> {
+    let found = units_warnings(mesh, water, mass);
+    for warning in &found {
+        warn_user(py, &format!("units: {warning}"))?;
+    }
+    Ok(found)
+}
+
+/// A `UserWarning` with `message`, attributed to the caller's line.
+fn warn_user(py: Python<'_>, message: &str) -> PyResult<()> {
+    let message = std::ffi::CString::new(message).unwrap_or_default();
+    PyErr::warn(py, &py.get_type::<PyUserWarning>(), &message, 1)
 }
 
 /// The righting-arm curve of `mesh`, without the interpreter lock; `heels` in degrees.
@@ -146,10 +186,19 @@ pub fn gz_curve(
     trim_deg: Option<&Bound<'_, PyAny>>,
     options: &EquilibriumOptions<f64>,
 ) -> PyResult<PyGzCurve> {
-    let heels: Vec<f64> = numbers(heel_deg, "heel_deg")?
-        .iter()
-        .map(|h| h.to_radians())
-        .collect();
+    let degrees = numbers(heel_deg, "heel_deg")?;
+    let span = degrees.iter().fold(0.0f64, |m, h| m.max(h.abs()));
+    if degrees.len() > 1 && span < 2.0 && span > 0.0 {
+        warn_user(
+            py,
+            &format!(
+                "heel_deg: the heels reach only {}°: they are read as degrees; if they are \
+                 radians, convert them (numpy.degrees)",
+                crate::format::g(span)
+            ),
+        )?;
+    }
+    let heels: Vec<f64> = degrees.iter().map(|h| h.to_radians()).collect();
     let trim = match (free_trim, given(trim_deg)) {
         (true, None) => Trim::Free,
         (true, Some(_)) => {
@@ -162,9 +211,13 @@ pub fn gz_curve(
         (false, None) => Trim::Fixed(0.0),
     };
     let mesh = mesh.core();
+    let units = warn_of_units(py, mesh, water, loading.mass())?;
     py.detach(|| mesh.gz_curve(water, loading, &heels, trim, options))
         .map(|inner| PyGzCurve { inner })
-        .map_err(|e| solver_error(e, &[("heels", "heel_deg"), ("trim", "trim_deg")]))
+        .map_err(|e| {
+            let error = solver_error(e, &[("heels", "heel_deg"), ("trim", "trim_deg")]);
+            with_units(error, &units)
+        })
 }
 
 /// The table options of the keyword arguments.

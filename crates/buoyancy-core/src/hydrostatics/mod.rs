@@ -270,6 +270,7 @@ mod openings;
 mod righting_arm;
 mod stability;
 mod table;
+mod units;
 mod waterplane;
 
 pub use equilibrium::{Equilibrium, EquilibriumOptions};
@@ -277,6 +278,10 @@ pub use openings::Opening;
 pub use righting_arm::{GzCurve, GzPoint, PositiveStability, Trim};
 pub use stability::{Hydrostatics, LoadingCondition};
 pub use table::{HydrostaticRow, TableOptions};
+pub use units::{
+    LARGEST_PLAUSIBLE_SIZE, LIGHTEST_PLAUSIBLE_DENSITY, SMALLEST_PLAUSIBLE_LOAD, UnitsWarning,
+    units_warnings,
+};
 pub use waterplane::Waterplane;
 
 #[cfg(doc)]
