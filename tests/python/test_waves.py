@@ -738,3 +738,19 @@ def test_a_mesh_too_coarse_for_the_waves_is_warned_of() -> None:
         shapes.cube(40).scaled(10.0).buoyancy(water=water)  # edges of 0.35 m
         with pytest.raises(UserWarning):
             coarse.buoyancy(water=water)
+
+
+def test_a_body_deep_under_the_hydrostatic_wave_pressure_is_warned_of() -> None:
+    # The default pressure carries ρg(η − z) to any depth (a cube 600 m down once felt the
+    # surface's wave force without a word); Froude–Krylov's decays, and is the one to use.
+    swell = [buoyancy.AiryWave(0.5, 20.0, (1, 0, 0), 1.0)]
+    hydrostatic = buoyancy.Water(waves=buoyancy.Waves(swell))
+    cube = shapes.cube()
+    with pytest.warns(UserWarning, match=r"the body lies deeper under the still level than .* \(3.1831 m\).*pressure=\"froude_krylov\""):
+        deep = cube.buoyancy(position=(0, -600, 0), water=hydrostatic)
+    assert abs(deep.force[0]) > 100.0  # the surface's wave force, 600 m down
+    fk = buoyancy.Water(waves=buoyancy.Waves(swell, pressure="froude_krylov"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert abs(cube.buoyancy(position=(0, -600, 0), water=fk).force[0]) < 1e-9
+        cube.buoyancy(position=(0, -3, 0), water=hydrostatic)  # 2.1 m under: within 1/k

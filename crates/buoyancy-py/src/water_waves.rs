@@ -200,9 +200,54 @@ impl WaterWaves {
                 .buoyancy_froude_krylov(pose, water, &waves.inner, time)
                 .map_err(Failure::Core);
         }
+        self.check_depth(mesh, pose, water)?;
         self.on_surface(water, |surface| {
             mesh.buoyancy_in_waves(pose, water, surface, time)
         })
+    }
+
+    /// Warns (a `UserWarning`, once per place in the caller's code) when a body lies deeper
+    /// under Airy or Gerstner waves than their longest wavelength over 2π, with the default
+    /// hydrostatic pressure: that pressure carries the surface's `ρg(η − z)` to any depth, where
+    /// the sea's decays as `e^{kz}` (already by 1/e there), so a submerged body would feel the
+    /// wave force it feels at the surface. The Froude–Krylov pressure is the one for it.
+    fn check_depth(
+        &self,
+        mesh: &Mesh<f64>,
+        pose: &Pose<f64>,
+        water: &Water<f64>,
+    ) -> Result<(), Failure> {
+        let components = match &self.surface {
+            Surface::Airy(waves) => waves.inner.components(),
+            Surface::Gerstner(waves) => waves.inner.components(),
+            _ => return Ok(()),
+        };
+        let longest = components
+            .iter()
+            .filter(|c| c.amplitude > 0.0)
+            .map(|c| c.wavelength)
+            .reduce(f64::max);
+        let Some(longest) = longest else {
+            return Ok(());
+        };
+        let decay_depth = longest / std::f64::consts::TAU;
+        let top = water.height(&(pose * mesh.centroid())) + mesh.bounding_radius();
+        if top < -decay_depth && top.is_finite() {
+            return Python::attach(|py| {
+                warn(
+                    py,
+                    &format!(
+                        "waves: the body lies deeper under the still level than its waves' \
+                         longest wavelength over 2π ({} m): the default hydrostatic pressure \
+                         carries the surface's ρg(η − z) to any depth, where the sea's decays as \
+                         e^(kz); for a submerged body use Waves(..., pressure=\"froude_krylov\")",
+                        crate::format::g(decay_depth)
+                    ),
+                )
+            })
+            .map_err(Failure::Raised);
+        }
+        Ok(())
     }
 
     /// Warns (a `UserWarning`, once per place in the caller's code) when the mesh's edges are
