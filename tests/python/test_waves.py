@@ -746,7 +746,10 @@ def test_a_body_deep_under_the_hydrostatic_wave_pressure_is_warned_of() -> None:
     swell = [buoyancy.AiryWave(0.5, 20.0, (1, 0, 0), 1.0)]
     hydrostatic = buoyancy.Water(waves=buoyancy.Waves(swell))
     cube = shapes.cube()
-    with pytest.warns(UserWarning, match=r"the body lies deeper under the still level than .* \(3.1831 m\).*pressure=\"froude_krylov\""):
+    with pytest.warns(
+        UserWarning,
+        match=r"the body lies deeper under the still level than .* \(3.1831 m\).*pressure=\"froude_krylov\"",
+    ):
         deep = cube.buoyancy(position=(0, -600, 0), water=hydrostatic)
     assert abs(deep.force[0]) > 100.0  # the surface's wave force, 600 m down
     fk = buoyancy.Water(waves=buoyancy.Waves(swell, pressure="froude_krylov"))
