@@ -46,7 +46,7 @@ def run_capped(code: str) -> subprocess.CompletedProcess[str]:
         ("b.shapes.torus(1.0, 0.25, 20000, 10000)", "segments"),
         # The cube's lattice of 25,000³ points: 62 TB.
         ("b.shapes.cube(25000)", "n"),
-        ("b.shapes.capsule(1.0, 1.0, 8, 2 * 10**9)", "stacks"),
+        ("b.shapes.capsule(1.0, 1.0, 8, 4 * 10**8)", "stacks"),
     ],
 )
 def test_a_request_too_large_for_memory_is_a_memory_error(call: str, argument: str) -> None:

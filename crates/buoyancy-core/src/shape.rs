@@ -48,12 +48,32 @@ fn at_least(
 
 /// Checks that the length `value` is finite and positive.
 fn positive(value: f64, parameter: &'static str) -> Result<(), Error> {
-    if value.is_finite() && value > 0.0 {
+    if !(value.is_finite() && value > 0.0) {
+        Err(Error::InvalidShape {
+            parameter,
+            reason: "must be finite and positive",
+        })
+    } else if !(1e-100..=1e100).contains(&value) {
+        Err(Error::InvalidShape {
+            parameter,
+            reason: "must lie between 1e-100 and 1e100 (m): beyond, the shape's volume \
+                     overflows or vanishes in f64",
+        })
+    } else {
+        Ok(())
+    }
+}
+
+/// Checks that a tube of radius `tube` about a curve of size `size` is at least 10⁻⁶ of it:
+/// thinner, `f64` cannot place the tube's vertices about the curve's (the mesh would be flat).
+fn thick_enough(tube: f64, size: f64, parameter: &'static str) -> Result<(), Error> {
+    if tube >= 1e-6 * size {
         Ok(())
     } else {
         Err(Error::InvalidShape {
             parameter,
-            reason: "must be finite and positive",
+            reason: "must be at least 1e-6 of the curve's radius: a thinner tube's vertices \
+                     cannot be told apart in f64",
         })
     }
 }
@@ -196,6 +216,7 @@ pub fn torus<T: Real>(
             reason: "must be smaller than major",
         });
     }
+    thick_enough(minor, major, "minor")?;
     tube(segments, sides, minor, |u| {
         let (s, c) = (libm::sin(u), libm::cos(u));
         (
@@ -212,7 +233,9 @@ pub fn torus<T: Real>(
 /// # Errors
 /// [`Error::InvalidShape`] if `p` or `q` is zero, `p` and `q` have a common factor (the curve
 /// would run over itself `gcd(p, q)` times), a radius is not finite and positive, the tube is
-/// too thick for the curve (it would run into itself: see [`tube_fits`]), `segments < 3`,
+/// too thick for the curve (it would run into itself: any two points of the curve more than
+/// `π·tube_radius` apart along it must be at least `2·tube_radius` apart, on 1,024 to 8,192
+/// samples), or thinner than 10⁻⁶ of `radius`, `segments < 3`,
 /// `sides < 3`, or there are too many vertices for `u32` indices.
 pub fn torus_knot<T: Real>(
     p: u32,
@@ -233,6 +256,7 @@ pub fn torus_knot<T: Real>(
     }
     positive(radius, "radius")?;
     positive(tube_radius, "tube_radius")?;
+    thick_enough(tube_radius, radius, "tube_radius")?;
     let samples = (64 * p.max(q) as usize).clamp(1024, 8192);
     let (p, q) = (p as f64, q as f64);
     let point = |u: f64| {
@@ -269,7 +293,8 @@ fn greatest_common_divisor(mut a: u32, mut b: u32) -> u32 {
 /// itself, judged on `samples` points of the curve: any two points further apart along the
 /// curve than half the tube's circumference, `π·r`, must be at least `2r` apart in space. (On
 /// a circle of radius `ρ ≥ r`, two points `π·r` apart along it are `2ρ·sin(πr/2ρ) ≥ 2r`
-/// apart, so the test also bounds the curvature: `r ≤ ρ`.)
+/// apart, so the test also bounds the curvature: `r ≤ ρ`; and a tube no shorter around than
+/// the curve is long, `2π·r ≥ L`, does not fit.)
 fn tube_fits(point: &impl Fn(f64) -> Vector3<f64>, samples: usize, r: f64) -> bool {
     let points: Vec<Vector3<f64>> = (0..samples)
         .map(|k| point(TAU * k as f64 / samples as f64))
@@ -282,6 +307,11 @@ fn tube_fits(point: &impl Fn(f64) -> Vector3<f64>, samples: usize, r: f64) -> bo
         length += (points[(k + 1) % samples] - points[k]).norm();
     }
     let (half_turn, diameter) = (core::f64::consts::PI * r, 2.0 * r);
+    // A closed curve turns by at least 2π (Fenchel), so somewhere its radius of curvature is at
+    // most its length over 2π: a thicker tube folds there, with no pair of points to show it.
+    if 2.0 * half_turn >= length {
+        return false;
+    }
     (0..samples).all(|i| {
         (i + 1..samples).all(|j| {
             let along = arc[j] - arc[i];
@@ -586,6 +616,11 @@ pub fn capsule<T: Real>(
             reason: "must be even (a ring at each end of the cylinder)",
         });
     }
+    // The rings' vertices, before the profile is made (`stacks + 2` of it would overflow).
+    indexable(
+        segments.checked_mul(stacks).and_then(|v| v.checked_add(2)),
+        "stacks",
+    )?;
     let profile = |scale: f64, half_height: f64| -> Result<Vec<(f64, f64)>, Error> {
         let mut profile = vec_with_capacity(stacks + 2, "stacks")?;
         for i in 0..=stacks {

@@ -203,10 +203,27 @@ impl<'a, T: Real> Solver<'a, T> {
                 reason: "must be positive (kg): a massless body has no equilibrium draft",
             });
         }
+        if mass < water.density() * mesh.volume() * T::from_f64_lossy(1e-12) {
+            return Err(Error::InvalidMass {
+                reason: "is less than 1e-12 of the mass of water the body displaces: it floats \
+                         at no draft the solver can find (check the units: kg, and a mesh in \
+                         metres)",
+            });
+        }
         if water.gravity() <= T::zero() {
             return Err(Error::InvalidWater {
                 parameter: "gravity",
                 reason: "must be positive for an equilibrium: without gravity nothing floats",
+            });
+        }
+        // A center of gravity a million body sizes away is a unit or a frame mistake; beyond,
+        // the moments of its weight overflow the solver's poses.
+        let offset = (loading.center_of_gravity() - mesh.centroid()).norm();
+        if !offset.is_finite() || offset > T::from_f64_lossy(1e6) * mesh.bounding_radius() {
+            return Err(Error::InvalidLoading {
+                parameter: "center_of_gravity",
+                reason: "lies more than 10⁶ body sizes (bounding radii) from the mesh's \
+                         centroid: check that it is in the mesh frame and in metres",
             });
         }
         let capacity = water.density() * mesh.volume();
