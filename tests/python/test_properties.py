@@ -28,6 +28,8 @@ from hypothesis.extra import numpy as hnp
 import buoyancy
 from buoyancy import shapes
 
+from conftest import quaternion_matrix
+
 # Fixed examples (derandomize), no deadline (the first call of a shape builds its mesh).
 VALID = settings(max_examples=1000, derandomize=True, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 INVALID = settings(max_examples=3000, derandomize=True, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -54,17 +56,6 @@ def quaternions(draw: st.DrawFn) -> np.ndarray:
     return q / norm
 
 
-def rotation_matrix(q: np.ndarray) -> np.ndarray:
-    x, y, z, w = q
-    return np.array(
-        [
-            [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
-        ]
-    )
-
-
 SHAPES = [
     lambda a, b, c: shapes.cuboid((a, b, c)),
     lambda a, b, c: shapes.ellipsoid((a, b, c), 12, 8),
@@ -81,7 +72,7 @@ def meshes(draw: st.DrawFn) -> buoyancy.Mesh:
     a, b, c = draw(positive), draw(positive), draw(positive)
     mesh = make(a, b, c)
     # Turned and moved in its own frame, so that the centroid is not the origin.
-    rotation = rotation_matrix(draw(quaternions()))
+    rotation = quaternion_matrix(draw(quaternions()))
     offset = np.array(draw(st.tuples(finite, finite, finite))) / 10
     matrix = np.eye(4)
     matrix[:3, :3] = rotation
@@ -107,7 +98,7 @@ def placements(draw: st.DrawFn, mesh: buoyancy.Mesh, water: buoyancy.Water) -> t
     height = draw(st.floats(min_value=-2.0, max_value=2.0)) * mesh.bounding_radius
     sideways = np.array(draw(st.tuples(finite, finite, finite)))
     sideways -= n * float(sideways @ n)
-    centroid_world = rotation_matrix(q) @ np.asarray(mesh.centroid)
+    centroid_world = quaternion_matrix(q) @ np.asarray(mesh.centroid)
     position = n * (water.level + height) + sideways - centroid_world
     return position, q
 
@@ -116,6 +107,21 @@ def scale_of(mesh: buoyancy.Mesh, water: buoyancy.Water) -> tuple[float, float, 
     """Tolerances: on volumes, forces and lengths."""
     volume = 1e-9 * mesh.volume + 1e-12 * mesh.bounding_radius**3
     return volume, volume * water.density * water.gravity, 1e-9 * mesh.bounding_radius
+
+
+def water_like(water: buoyancy.Water, level: float, normal: np.ndarray) -> buoyancy.Water:
+    """``water`` with another still plane."""
+    return buoyancy.Water(density=water.density, gravity=water.gravity, level=level, normal=tuple(normal))
+
+
+def assert_same(
+    got: buoyancy.Buoyancy, base: buoyancy.Buoyancy, rotation: np.ndarray, tol_v: float, tol_f: float
+) -> None:
+    """``got`` is ``base`` turned by ``rotation``: the same volume, the force and torque turned
+    (forces to ``tol_f``; torques to ``tol_f`` times the body's size plus one)."""
+    assert got.volume == pytest.approx(base.volume, abs=tol_v)
+    np.testing.assert_allclose(got.force, rotation @ base.force, atol=tol_f)
+    np.testing.assert_allclose(got.torque, rotation @ base.torque, atol=tol_f)
 
 
 @VALID
@@ -130,7 +136,7 @@ def test_still_water_invariants(data: st.DataObject) -> None:
         assert np.all(np.isfinite(array))
     # Below + above = total: the same body under the water turned upside down.
     n = np.asarray(water.normal)
-    flipped = buoyancy.Water(density=water.density, gravity=water.gravity, level=-water.level, normal=tuple(-n))
+    flipped = water_like(water, -water.level, -n)
     above = mesh.buoyancy(position, q, water=flipped)
     assert exact.volume + above.volume == pytest.approx(mesh.volume, abs=tol_v)
     assert -tol_v <= exact.volume <= mesh.volume + tol_v
@@ -163,16 +169,11 @@ def test_moving_and_turning_body_and_water_together(data: st.DataObject) -> None
     # Translation: body and plane moved by d.
     d = np.array(data.draw(st.tuples(finite, finite, finite)))
     n = np.asarray(water.normal)
-    moved_water = buoyancy.Water(
-        density=water.density, gravity=water.gravity, level=water.level + float(d @ n), normal=tuple(n)
-    )
-    moved = mesh.buoyancy(position + d, q, water=moved_water)
-    assert moved.volume == pytest.approx(base.volume, abs=tol_v)
-    np.testing.assert_allclose(moved.force, base.force, atol=tol_f)
-    np.testing.assert_allclose(moved.torque, base.torque, atol=tol_f * (1 + mesh.bounding_radius))
+    moved = mesh.buoyancy(position + d, q, water=water_like(water, water.level + float(d @ n), n))
+    assert_same(moved, base, np.eye(3), tol_v, tol_f * (1 + mesh.bounding_radius))
     # Rotation about the origin: body pose and normal turned by R.
     r = data.draw(quaternions())
-    rot = rotation_matrix(r)
+    rot = quaternion_matrix(r)
     x, y, z, w = r
     a, b, c, e = q
     composed = np.array(
@@ -183,13 +184,9 @@ def test_moving_and_turning_body_and_water_together(data: st.DataObject) -> None
             w * e - x * a - y * b - z * c,
         ]
     )
-    turned_water = buoyancy.Water(
-        density=water.density, gravity=water.gravity, level=water.level, normal=tuple(rot @ n)
-    )
+    turned_water = water_like(water, water.level, rot @ n)
     turned = mesh.buoyancy(rot @ position, composed / np.linalg.norm(composed), water=turned_water)
-    assert turned.volume == pytest.approx(base.volume, abs=tol_v)
-    np.testing.assert_allclose(turned.force, rot @ base.force, atol=tol_f)
-    np.testing.assert_allclose(turned.torque, rot @ base.torque, atol=tol_f * (1 + mesh.bounding_radius))
+    assert_same(turned, base, rot, tol_v, tol_f * (1 + mesh.bounding_radius))
 
 
 @st.composite

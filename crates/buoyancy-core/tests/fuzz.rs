@@ -8,7 +8,7 @@
 use buoyancy_core::nalgebra::{Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use buoyancy_core::{Error, Mesh, Method, Pose, Water, shape};
+use buoyancy_core::{Buoyancy, Error, Mesh, Method, Pose, Water, shape};
 use proptest::prelude::*;
 use proptest::test_runner::TestRunner;
 
@@ -25,20 +25,21 @@ fn coordinate() -> impl Strategy<Value = f64> {
 fn check_query(mesh: &Mesh<f64>, pose: &Pose<f64>, water: &Water<f64>) {
     for method in Method::ALL {
         match mesh.buoyancy(pose, water, method) {
-            Ok(b) => {
-                let numbers = [b.submerged_volume]
-                    .into_iter()
-                    .chain(b.center_of_buoyancy.iter().copied())
-                    .chain(b.force.iter().copied())
-                    .chain(b.torque.iter().copied());
-                for x in numbers {
-                    assert!(x.is_finite(), "{method}: {b:?}");
-                }
-            }
+            Ok(b) => assert!(all_finite(&b), "{method}: {b:?}"),
             Err(Error::InvalidPose { .. } | Error::NonFiniteResult) => {}
             Err(e) => panic!("{method} on a valid mesh: {e}"),
         }
     }
+}
+
+/// Whether every number of `b` is finite.
+fn all_finite(b: &Buoyancy<f64>) -> bool {
+    [b.submerged_volume, b.wetted_area]
+        .into_iter()
+        .chain(b.center_of_buoyancy.iter().copied())
+        .chain(b.force.iter().copied())
+        .chain(b.torque.iter().copied())
+        .all(f64::is_finite)
 }
 
 fn pose_from((tx, ty, tz, qx, qy, qz, qw): (f64, f64, f64, f64, f64, f64, f64)) -> Pose<f64> {
@@ -297,16 +298,7 @@ proptest! {
         ];
         for result in results {
             match result {
-                Ok(b) => {
-                    let numbers = [b.submerged_volume]
-                        .into_iter()
-                        .chain(b.center_of_buoyancy.iter().copied())
-                        .chain(b.force.iter().copied())
-                        .chain(b.torque.iter().copied());
-                    for x in numbers {
-                        prop_assert!(x.is_finite(), "{b:?}");
-                    }
-                }
+                Ok(b) => prop_assert!(all_finite(&b), "{b:?}"),
                 Err(e) => prop_assert!(
                     matches!(
                         e,
