@@ -334,10 +334,10 @@ impl<T: Real> Mesh<T> {
     /// For the vertices from `first` on, one per entry of `heights`: their heights
     /// `n·x − level − η` above the free surface less `reference` (taken out before the sum, so
     /// that a body far below keeps its digits), and the linear sums (see `vertex_terms`) of the
-    /// wet ones (below the surface) on the heights themselves. A vertex more than the `layer`'s reach plus the
-    /// longest edge above its middle belongs to dry triangles only: it gets a positive height
-    /// (its height above the layer) and the surface is not evaluated there. With no `layer`
-    /// every vertex is evaluated.
+    /// wet ones (below the surface) on the heights themselves. A vertex more than the `layer`'s
+    /// reach plus the longest edge above its middle belongs to dry triangles only: it gets a
+    /// positive height (its height above the layer) and the surface is not evaluated there.
+    /// With no `layer` every vertex is evaluated.
     #[allow(clippy::too_many_arguments)]
     fn heights_in_chunk(
         &self,
