@@ -11,7 +11,7 @@ use numpy::{
 use pyo3::PyTypeInfo;
 use pyo3::exceptions::{PyOverflowError, PyTypeError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyInt, PyList, PyString, PyTuple};
+use pyo3::types::{PyBool, PyFloat, PyInt, PyList, PyString, PyTuple};
 
 use crate::errors::{arg_error, to_py, type_error};
 use crate::format::g;
@@ -29,11 +29,16 @@ pub fn given<'a, 'py>(obj: Option<&'a Bound<'py, PyAny>>) -> Option<&'a Bound<'p
 /// Whether `obj` is a Python or NumPy boolean, which is an `int` to Python but never a number
 /// here: `True` as a coordinate, a count or an index is a mistake.
 fn is_bool(obj: &Bound<'_, PyAny>) -> bool {
-    obj.is_instance_of::<PyBool>()
-        || obj
-            .get_type()
-            .name()
-            .is_ok_and(|n| n.to_str().is_ok_and(|n| n == "bool" || n == "bool_"))
+    if obj.is_instance_of::<PyBool>() {
+        return true;
+    }
+    // The common cases first: a Python float or int (not a bool, checked above) is a number.
+    if obj.is_instance_of::<PyFloat>() || obj.is_instance_of::<PyInt>() {
+        return false;
+    }
+    obj.get_type()
+        .name()
+        .is_ok_and(|n| n.to_str().is_ok_and(|n| n == "bool" || n == "bool_"))
 }
 
 /// A real number (a Python `int` or `float`, a NumPy scalar, anything with `__float__`; not a
@@ -244,21 +249,26 @@ fn small_sequence<const N: usize>(
     name: &str,
 ) -> PyResult<Option<[f64; N]>> {
     let mut out = [0.0; N];
-    let items: Vec<Bound<'_, PyAny>> = if let Ok(t) = obj.cast::<PyTuple>() {
-        if t.len() != N {
-            return Ok(None);
-        }
-        t.iter().collect()
-    } else if let Ok(l) = obj.cast::<PyList>() {
-        if l.len() != N {
-            return Ok(None);
-        }
-        l.iter().collect()
-    } else {
-        return Ok(None);
+    let tuple = obj.cast::<PyTuple>().ok();
+    let list = obj.cast::<PyList>().ok();
+    let len = match (&tuple, &list) {
+        (Some(t), _) => t.len(),
+        (_, Some(l)) => l.len(),
+        _ => return Ok(None),
     };
-    for (k, (o, item)) in out.iter_mut().zip(&items).enumerate() {
-        if is_bool(item) {
+    if len != N {
+        return Ok(None);
+    }
+    for (k, o) in out.iter_mut().enumerate() {
+        let item = match (&tuple, &list) {
+            (Some(t), _) => t.get_item(k),
+            (_, Some(l)) => l.get_item(k),
+            _ => return Ok(None),
+        };
+        let Ok(item) = item else {
+            return Ok(None);
+        };
+        if is_bool(&item) {
             return Err(PyTypeError::new_err(format!(
                 "{name}: expected an array of real numbers, got a bool at [{k}]"
             )));
