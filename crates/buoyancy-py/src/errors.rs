@@ -8,7 +8,7 @@ use buoyancy_core::Error;
 use pyo3::create_exception;
 use pyo3::exceptions::{
     PyFileNotFoundError, PyIsADirectoryError, PyMemoryError, PyOSError, PyPermissionError,
-    PyTypeError, PyValueError,
+    PyTypeError, PyUserWarning, PyValueError,
 };
 use pyo3::prelude::*;
 
@@ -30,6 +30,13 @@ pub fn type_error(name: &str, expected: impl Display, obj: &Bound<'_, PyAny>) ->
         "{name}: expected {expected}, got {}",
         type_name(obj)
     ))
+}
+
+/// A `UserWarning` with `message`, attributed to the caller's line (Python shows it once per
+/// line; `warnings.simplefilter("error")` makes it the returned error).
+pub fn warn_user(py: Python<'_>, message: &str) -> PyResult<()> {
+    let message = std::ffi::CString::new(message).unwrap_or_default();
+    PyErr::warn(py, &py.get_type::<PyUserWarning>(), &message, 1)
 }
 
 /// The name of `obj`'s type as Python prints it (`float`, `tuple`, `numpy.ndarray`).

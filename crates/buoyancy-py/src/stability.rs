@@ -9,13 +9,13 @@ use buoyancy_core::hydrostatics::{
 use buoyancy_core::nalgebra::{Point3, UnitQuaternion};
 use buoyancy_core::{Error, Water};
 use numpy::{PyArray1, PyArray2};
-use pyo3::exceptions::{PyRuntimeError, PyUserWarning};
+use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::arrays;
 use crate::convert::{self, given};
-use crate::errors::{arg_error, to_py};
+use crate::errors::{arg_error, to_py, warn_user};
 use crate::format::g;
 use crate::hydrostatics::{self, PyHydrostatics};
 use crate::mesh::PyMesh;
@@ -166,12 +166,6 @@ fn warn_of_units(
         warn_user(py, &format!("units: {warning}"))?;
     }
     Ok(found)
-}
-
-/// A `UserWarning` with `message`, attributed to the caller's line.
-fn warn_user(py: Python<'_>, message: &str) -> PyResult<()> {
-    let message = std::ffi::CString::new(message).unwrap_or_default();
-    PyErr::warn(py, &py.get_type::<PyUserWarning>(), &message, 1)
 }
 
 /// The righting-arm curve of `mesh`, without the interpreter lock; `heels` in degrees.

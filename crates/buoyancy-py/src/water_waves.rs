@@ -2,15 +2,15 @@
 //! and the evaluations on them (buoyancy, elevations), whose failures name what failed.
 
 use buoyancy_core::nalgebra::Point3;
-use buoyancy_core::waves::{AiryWaves, BREAKING_STEEPNESS, WaterSurface};
+use buoyancy_core::waves::{AiryComponent, AiryWaves, BREAKING_STEEPNESS, WaterSurface};
 use buoyancy_core::{Buoyancy, Error, Mesh, Method, Pose, Traversal, Water};
-use pyo3::exceptions::{PyTypeError, PyUserWarning, PyValueError};
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyType;
 
 use crate::airy::{PyAiryWave, PyWaves};
 use crate::convert;
-use crate::errors::{arg_error, to_py, type_error};
+use crate::errors::{arg_error, to_py, type_error, warn_user};
 use crate::gerstner::PyGerstnerWaves;
 use crate::height_grid::PyHeightGrid;
 use crate::pressure::Pressure;
@@ -41,12 +41,6 @@ pub enum Failure {
     Function(FunctionFailure),
     /// A warning turned into an error (`warnings.simplefilter("error")`).
     Raised(PyErr),
-}
-
-/// A `UserWarning` with `message`, attributed to the caller's line.
-fn warn(py: Python<'_>, message: &str) -> PyResult<()> {
-    let message = std::ffi::CString::new(message).unwrap_or_default();
-    PyErr::warn(py, &py.get_type::<PyUserWarning>(), &message, 1)
 }
 
 impl Failure {
@@ -129,7 +123,7 @@ impl WaterWaves {
                  break): linear theory's surface and pressure are a look here, not the sea's",
                 crate::format::g(steepness)
             );
-            warn(obj.py(), &message)?;
+            warn_user(obj.py(), &message)?;
         }
         Ok(WaterWaves {
             given: obj.clone().unbind(),
@@ -206,6 +200,15 @@ impl WaterWaves {
         })
     }
 
+    /// The components of Airy or Gerstner waves; `None` for a grid or a function.
+    fn linear_components(&self) -> Option<&[AiryComponent<f64>]> {
+        match &self.surface {
+            Surface::Airy(waves) => Some(waves.inner.components()),
+            Surface::Gerstner(waves) => Some(waves.inner.components()),
+            _ => None,
+        }
+    }
+
     /// Warns (a `UserWarning`, once per place in the caller's code) when a body lies deeper
     /// under Airy or Gerstner waves than their longest wavelength over 2π, with the default
     /// hydrostatic pressure: that pressure carries the surface's `ρg(η − z)` to any depth, where
@@ -217,10 +220,8 @@ impl WaterWaves {
         pose: &Pose<f64>,
         water: &Water<f64>,
     ) -> Result<(), Failure> {
-        let components = match &self.surface {
-            Surface::Airy(waves) => waves.inner.components(),
-            Surface::Gerstner(waves) => waves.inner.components(),
-            _ => return Ok(()),
+        let Some(components) = self.linear_components() else {
+            return Ok(());
         };
         let longest = components
             .iter()
@@ -234,7 +235,7 @@ impl WaterWaves {
         let top = water.height(&(pose * mesh.centroid())) + mesh.bounding_radius();
         if top < -decay_depth && top.is_finite() {
             return Python::attach(|py| {
-                warn(
+                warn_user(
                     py,
                     &format!(
                         "waves: the body lies deeper under the still level than its waves' \
@@ -254,19 +255,12 @@ impl WaterWaves {
     /// longer than half the shortest wavelength: the surface is evaluated at the vertices, and a
     /// wave that short is not seen between them.
     fn check_sampling(&self, mesh: &Mesh<f64>) -> Result<(), Failure> {
-        let shortest = match &self.surface {
-            Surface::Airy(waves) => waves.inner.shortest_wavelength(),
-            Surface::Gerstner(waves) => waves
-                .inner
-                .components()
-                .iter()
-                .map(|c| c.wavelength)
-                .reduce(f64::min),
-            _ => None,
-        };
+        let shortest = self
+            .linear_components()
+            .and_then(|c| c.iter().map(|c| c.wavelength).reduce(f64::min));
         match shortest {
             Some(wavelength) if 2.0 * mesh.longest_edge() > wavelength => Python::attach(|py| {
-                warn(
+                warn_user(
                     py,
                     &format!(
                         "waves: the mesh's longest edge, {} m, is more than half the shortest \
