@@ -65,7 +65,7 @@ fn main() {
     };
     let names: Vec<&String> = args.iter().filter(|a| !keyword(a)).collect();
     let mut models = common::models::<f64>(large);
-    let (v, t) = buoyancy::shape::torus(1.0, 0.25, 200, 75).unwrap();
+    let (v, t) = buoyancy::mesh::primitives::torus(1.0, 0.25, 200, 75).unwrap();
     let torus = buoyancy::Mesh::new(v, t).expect("valid mesh");
     models.insert(
         models.len() - usize::from(large),

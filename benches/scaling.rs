@@ -19,7 +19,7 @@ mod plot_font;
 use std::hint::black_box;
 use std::time::Instant;
 
-use buoyancy::{Mesh, Method, Traversal, shape};
+use buoyancy::{Mesh, Method, Traversal, mesh::primitives};
 use plot_font::FAMILY;
 use plotters::prelude::*;
 
@@ -65,7 +65,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     ];
     let mut rows = Vec::new();
     for (segments, sides) in sizes {
-        let (v, t) = shape::torus_knot::<f64>(2, 3, 1.0, 0.25, segments, sides).unwrap();
+        let (v, t) = primitives::torus_knot::<f64>(2, 3, 1.0, 0.25, segments, sides).unwrap();
         if memory_only {
             let mesh = Mesh::new(v, t)?;
             let bytes = mesh.hierarchy_bytes() as f64 / mesh.triangle_count() as f64;

@@ -15,7 +15,7 @@ mod common;
 use std::hint::black_box;
 
 use buoyancy::nalgebra::{Point3, Vector3};
-use buoyancy::waves::{
+use buoyancy::water::{
     AiryComponent, AiryWaves, CalmSurface, GerstnerWaves, HeightGrid, SeaState, Spectrum,
     WaterSurface,
 };

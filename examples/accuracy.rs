@@ -12,7 +12,7 @@ use std::f64::consts::PI;
 use std::time::Instant;
 
 use buoyancy::nalgebra::{Translation3, UnitQuaternion, Vector3};
-use buoyancy::{Mesh, Method, Pose, Water, shape};
+use buoyancy::{Mesh, Method, Pose, Water, mesh::primitives};
 
 struct Case {
     name: String,
@@ -25,7 +25,7 @@ struct Case {
 fn main() -> Result<(), buoyancy::Error> {
     let water = Water::new(1.0, 1.0, Vector3::y(), 0.0)?;
     let cube = |n: usize| -> Result<Case, buoyancy::Error> {
-        let (v, t) = shape::cube(n)?;
+        let (v, t) = primitives::cube(n)?;
         Ok(Case {
             name: format!("cube {n}² per face ({} triangles)", t.len()),
             mesh: Mesh::new(v, t)?,
@@ -34,7 +34,7 @@ fn main() -> Result<(), buoyancy::Error> {
         })
     };
     let sphere = |s: usize| -> Result<Case, buoyancy::Error> {
-        let (v, t) = shape::uv_sphere(1.0, s, s)?;
+        let (v, t) = primitives::uv_sphere(1.0, s, s)?;
         Ok(Case {
             name: format!("sphere {s}² segments ({} triangles)", t.len()),
             mesh: Mesh::new(v, t)?,

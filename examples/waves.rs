@@ -8,7 +8,7 @@
 //! cargo run --release --example waves
 //! ```
 //!
-//! * **Hull**: a closed Wigley hull ([`shape::wigley_hull`]), 4 m long, 0.6 m wide, 0.25 m
+//! * **Hull**: a closed Wigley hull ([`primitives::wigley_hull`]), 4 m long, 0.6 m wide, 0.25 m
 //!   design draft, 0.15 m of freeboard, of uniform density chosen so that it floats at its
 //!   design draft; heading into the waves (its length along x, the waves travelling along +x).
 //! * **Bunny**: the Stanford bunny of the sample meshes (`$BUOYANCY_MESHES`, else
@@ -45,8 +45,8 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use buoyancy::nalgebra::{Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
-use buoyancy::waves::{AiryComponent, AiryWaves, SeaState, Spectrum, WaterSurface};
-use buoyancy::{Mesh, Method, Water, shape};
+use buoyancy::water::{AiryComponent, AiryWaves, SeaState, Spectrum, WaterSurface};
+use buoyancy::{Mesh, Method, Water, mesh::primitives};
 use buoyancy_rapier::{FloatOptions, FloatingBodies};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -238,7 +238,7 @@ struct Meshes {
 
 fn meshes(water: &Water<f64>) -> Result<Meshes> {
     let (length, beam, draft, freeboard) = HULL;
-    let (v, t) = shape::wigley_hull::<f64>(length, beam, draft, freeboard, 41, 17)?;
+    let (v, t) = primitives::wigley_hull::<f64>(length, beam, draft, freeboard, 41, 17)?;
     let hull = Mesh::new(v, t)?;
     // Mass = ρ × the mesh's volume below the design waterline (y = 0 at the identity pose).
     let underwater = hull.buoyancy(&buoyancy::Pose::identity(), water, Method::Exact)?;

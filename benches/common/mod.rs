@@ -4,7 +4,7 @@
 use std::time::{Duration, Instant};
 
 use buoyancy::nalgebra::{Translation3, UnitQuaternion, Vector3};
-use buoyancy::{Mesh, Pose, Real, Water, shape};
+use buoyancy::{Mesh, Pose, Real, Water, mesh::primitives};
 
 /// A benchmark model: its name in the paper's Table 1 (if any), the paper's times in ms
 /// (Fast, Improved, Exact, Fast Surface, Exact Surface), and the mesh.
@@ -17,7 +17,7 @@ pub struct Model<T: Real> {
 /// The paper's three models from the shared meshes, a procedural torus knot of the same size
 /// when they are missing, and (with `large`) a procedural torus knot of 1,000,000 triangles.
 pub fn models<T: Real>(large: bool) -> Vec<Model<T>> {
-    let build = |(v, t): shape::Shape<T>| Mesh::new(v, t).expect("valid mesh");
+    let build = |(v, t): primitives::Shape<T>| Mesh::new(v, t).expect("valid mesh");
     let mut models = Vec::new();
     let table = [
         (
@@ -42,7 +42,7 @@ pub fn models<T: Real>(large: bool) -> Vec<Model<T>> {
         }
         None => {
             eprintln!("note: benchmarking a procedural torus knot only");
-            let mesh = build(shape::torus_knot(2, 3, 1.0, 0.25, 80, 11).unwrap());
+            let mesh = build(primitives::torus_knot(2, 3, 1.0, 0.25, 80, 11).unwrap());
             models.push(Model {
                 name: "procedural torus knot 1760".into(),
                 paper_ms: None,
@@ -51,7 +51,7 @@ pub fn models<T: Real>(large: bool) -> Vec<Model<T>> {
         }
     }
     if large {
-        let mesh = build(shape::torus_knot(2, 3, 1.0, 0.25, 4000, 125).unwrap());
+        let mesh = build(primitives::torus_knot(2, 3, 1.0, 0.25, 4000, 125).unwrap());
         models.push(Model {
             name: format!("torus knot {}", mesh.triangle_count()),
             paper_ms: None,

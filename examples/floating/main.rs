@@ -25,7 +25,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use buoyancy::nalgebra::{Point3, Quaternion, Rotation3, Translation3, UnitQuaternion, Vector3};
-use buoyancy::{Mesh, shape};
+use buoyancy::{Mesh, mesh::primitives};
 use buoyancy_rapier::{FloatOptions, FloatingBodies};
 use rapier3d::prelude::*;
 
@@ -56,7 +56,7 @@ fn model(file: &str, radius: f64, z_up: bool) -> Result<(String, Mesh<f64>), buo
             println!("note: using a procedural torus knot instead of {file}");
             (
                 "torus knot (procedural)".to_string(),
-                shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16)?,
+                primitives::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16)?,
             )
         }
     };
@@ -120,7 +120,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut water = FloatingBodies::new(world.gravity)?;
     let mut bodies: Vec<Body> = Vec::new();
 
-    let (v, t) = shape::cube::<f64>(1)?;
+    let (v, t) = primitives::cube::<f64>(1)?;
     let cube = Mesh::new(v, t)?;
     let sphere_radius = 0.5;
     let (knot_name, knot) = model("torusknot.obj", 0.6, false)?;
@@ -139,7 +139,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     for s in [0.3, 0.7] {
         let ball = ColliderBuilder::ball(sphere_radius as f32);
-        let (v, t) = shape::uv_sphere::<f64>(sphere_radius, 64, 32)?;
+        let (v, t) = primitives::uv_sphere::<f64>(sphere_radius, 64, 32)?;
         lineup.push((
             "sphere".into(),
             s,

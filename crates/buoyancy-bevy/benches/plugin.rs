@@ -37,7 +37,7 @@ use buoyancy_bevy::{BuoyancyPlugin, FloatReport, Floating, Water};
 use buoyancy_core::Mesh;
 use buoyancy_core::controller::{BodyOptions, BodyState, Command, Controller, Part, Settings};
 use buoyancy_core::nalgebra::{Point3, Vector3};
-use buoyancy_core::waves::{AiryWaves, SeaState, Spectrum};
+use buoyancy_core::water::{AiryWaves, SeaState, Spectrum};
 
 const BODIES: usize = 100;
 /// The physics step, s: one per `App::update`.

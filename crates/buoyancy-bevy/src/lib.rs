@@ -30,7 +30,7 @@
 //!
 //! # What it does
 //! * **The water** is the [`Water`] resource: density, still level, up (opposite to the
-//!   physics gravity unless set) and waves (any [`WaterSurface`](buoyancy_core::waves::WaterSurface)
+//!   physics gravity unless set) and waves (any [`WaterSurface`](buoyancy_core::water::WaterSurface)
 //!   of the core: Airy waves, a JONSWAP sea, Gerstner waves, a height grid), on the physics clock.
 //!   [`Water::elevation`] and [`Water::normal`] give the surface the bodies feel, for drawing the
 //!   sea and for gameplay.

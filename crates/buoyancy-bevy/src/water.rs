@@ -6,7 +6,7 @@ use bevy::math::Vec3;
 use bevy::prelude::Resource;
 use buoyancy_core::controller::SharedSurface;
 use buoyancy_core::nalgebra::{Point3, Vector3};
-use buoyancy_core::waves::WaterSurface;
+use buoyancy_core::water::WaterSurface;
 
 /// The water every [`Floating`](crate::Floating) entity floats in: its density, the height of
 /// its still surface, which way is up, and its waves, on the physics clock.
@@ -15,7 +15,7 @@ use buoyancy_core::waves::WaterSurface;
 /// World frame, SI units. `up` is opposite to the physics gravity (the backend's) unless set;
 /// with no gravity, `+y`. The still surface is the plane `up · x = level`; waves raise it by
 /// their elevation `η` along `up` at each horizontal position (see
-/// [`buoyancy_core::waves`]). The bodies feel exactly the surface [`Water::elevation`] gives.
+/// [`buoyancy_core::water`]). The bodies feel exactly the surface [`Water::elevation`] gives.
 ///
 /// # Clock
 /// The waves run on the physics clock: the plugin advances [`Water::time`] by each physics
@@ -25,7 +25,7 @@ use buoyancy_core::waves::WaterSurface;
 /// ```
 /// use buoyancy_bevy::Water;
 /// use buoyancy_core::nalgebra::Vector3;
-/// use buoyancy_core::waves::{AiryComponent, AiryWaves};
+/// use buoyancy_core::water::{AiryComponent, AiryWaves};
 ///
 /// let crest = AiryComponent { amplitude: 0.5, wavelength: 40.0, direction: Vector3::x(), phase: 0.0 };
 /// let swell = AiryWaves::new(vec![crest], None)?; // deep water

@@ -108,14 +108,14 @@ pub enum Error {
         /// What is wrong with it.
         reason: &'static str,
     },
-    /// A procedural shape's parameter is out of range (see [`crate::shape`]).
+    /// A procedural shape's parameter is out of range (see [`crate::mesh::primitives`]).
     InvalidShape {
         /// The parameter's name, as in the generator's signature.
         parameter: &'static str,
         /// What is wrong with it.
         reason: &'static str,
     },
-    /// A water surface (see [`waves`](crate::waves)) that is not physical or cannot be
+    /// A water surface (see [`waves`](crate::water)) that is not physical or cannot be
     /// evaluated: a negative amplitude, a grid of the wrong size, a non-finite elevation or time.
     InvalidSurface {
         /// The parameter at fault, as named in the surface's constructor or query: e.g.
@@ -190,7 +190,7 @@ pub enum Error {
     /// An opening of a hull given to [`Mesh::close_openings`](crate::Mesh::close_openings) (a
     /// loop of open edges) is not planar within the tolerance, so no flat lid closes it.
     NonPlanarOpening {
-        /// The opening's number (see [`Opening`](crate::hydrostatics::Opening)).
+        /// The opening's number (see [`Opening`](crate::mesh::Opening)).
         opening: usize,
         /// The vertex of its rim farthest from the rim's mean plane (zero-based input index).
         vertex: u32,
@@ -202,7 +202,7 @@ pub enum Error {
     /// An opening of a hull given to [`Mesh::close_openings`](crate::Mesh::close_openings)
     /// cannot be closed by a lid: its rim encloses no area, or two rims meet at a vertex.
     InvalidOpening {
-        /// The opening's number (see [`Opening`](crate::hydrostatics::Opening)).
+        /// The opening's number (see [`Opening`](crate::mesh::Opening)).
         opening: usize,
         /// A vertex of its rim (zero-based input index): the one where rims meet, if they do.
         vertex: u32,
@@ -213,7 +213,7 @@ pub enum Error {
     /// ([`Mesh::close_openings`](crate::Mesh::close_openings)), at the pose queried: the
     /// results would count the lid as hull while the water flows in.
     OpeningSubmerged {
-        /// The opening's number (see [`Opening`](crate::hydrostatics::Opening)).
+        /// The opening's number (see [`Opening`](crate::mesh::Opening)).
         opening: usize,
         /// The lowest vertex of its rim (zero-based input index).
         vertex: u32,

@@ -4,7 +4,7 @@
 //! calculation for real-time floating simulation of meshes* against a flat water plane of any
 //! orientation, with the torque of the pressure field integrated exactly: [`Method`] lists them.
 //! [`Mesh::buoyancy`] evaluates one, [`Mesh::damping`] the hydrodynamic damping that lets
-//! floating bodies settle, [`io`] reads OBJ, STL and PLY files and [`shape`] builds procedural
+//! floating bodies settle, [`io`] reads OBJ, STL and PLY files and [`mesh::primitives`] builds procedural
 //! meshes.
 //!
 //! # Features
@@ -24,11 +24,11 @@
 //!
 //! # Example
 //! ```
-//! use buoyancy_core::{shape, Mesh, Method, Pose, Water};
+//! use buoyancy_core::{mesh::primitives, Mesh, Method, Pose, Water};
 //! use nalgebra::{Translation3, UnitQuaternion};
 //!
 //! // A unit cube (centered at the origin of its mesh frame) with its center 0.25 m below the surface.
-//! let (vertices, triangles) = shape::cube::<f64>(1).unwrap();
+//! let (vertices, triangles) = primitives::cube::<f64>(1).unwrap();
 //! let cube = Mesh::new(vertices, triangles).unwrap();
 //! let pose = Pose::from_parts(Translation3::new(0.0, -0.25, 0.0), UnitQuaternion::identity());
 //! let b = cube.buoyancy(&pose, &Water::default(), Method::Exact).unwrap();
@@ -44,42 +44,21 @@ extern crate alloc;
 #[cfg(feature = "std")]
 extern crate std;
 
-mod buoyancy;
-mod clip;
 pub mod controller;
 pub mod damping;
 mod error;
-mod frame;
-pub mod froude_krylov;
-mod hierarchy;
 pub mod hydrostatics;
 pub mod io;
-mod mesh;
-mod method;
-mod node_sums;
-mod query;
+pub mod mesh;
+pub mod query;
 mod real;
-pub mod reduced_mesh;
-mod reduction;
-pub mod shape;
-mod surface;
-mod surface_moments;
-mod traversal;
-mod validation;
-mod vertex_terms;
-mod volume;
-mod water;
-pub mod wave_pressure;
-pub mod waves;
+pub mod water;
 
-pub use buoyancy::Buoyancy;
 pub use damping::{Damping, DampingCoefficients};
 pub use error::Error;
-pub use mesh::Mesh;
-pub use method::Method;
+pub use mesh::{Culprit, Defect, DefectKind, Mesh, MeshDefects};
+pub use query::{Buoyancy, Method, Traversal};
 pub use real::Real;
-pub use traversal::Traversal;
-pub use validation::{Culprit, Defect, DefectKind, MeshDefects};
 pub use water::Water;
 
 /// A rigid transform from mesh space to world space: `x_world = rotation · x_mesh + translation`.

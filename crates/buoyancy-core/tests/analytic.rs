@@ -7,7 +7,7 @@ mod common;
 use std::f64::consts::PI;
 
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::{Mesh, Method, Pose, Traversal, Water, shape};
+use buoyancy_core::{Mesh, Method, Pose, Traversal, Water, mesh::primitives};
 use common::{assert_close, assert_close_v, reference};
 
 /// ρ = g = 1, y up, surface at y = 0.
@@ -43,12 +43,12 @@ fn inradius(mesh: &Mesh<f64>) -> f64 {
 }
 
 fn cube(n: usize) -> Mesh<f64> {
-    let (v, t) = shape::cube(n).unwrap();
+    let (v, t) = primitives::cube(n).unwrap();
     Mesh::new(v, t).unwrap()
 }
 
 fn sphere(segments: usize) -> Mesh<f64> {
-    let (v, t) = shape::uv_sphere(1.0, segments, segments).unwrap();
+    let (v, t) = primitives::uv_sphere(1.0, segments, segments).unwrap();
     Mesh::new(v, t).unwrap()
 }
 
@@ -212,7 +212,7 @@ fn all_methods_agree_when_fully_submerged() {
 #[test]
 fn exact_pressure_torque_on_a_tilted_submerged_body_is_zero() {
     let water = unit_water();
-    let (v, t) = shape::torus_knot(2, 3, 1.0, 0.25, 80, 11).unwrap();
+    let (v, t) = primitives::torus_knot(2, 3, 1.0, 0.25, 80, 11).unwrap();
     let mesh = Mesh::new(v, t).unwrap();
     let rotation = UnitQuaternion::from_euler_angles(0.3, 0.2, 0.1);
     let pose = Pose::from_parts(Translation3::new(0.0, -3.0, 0.0), rotation);

@@ -4,15 +4,15 @@
 //! For all five methods, both traversals, at random attitudes.
 
 use buoyancy_core::nalgebra::{Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::{Mesh, Method, Pose, Traversal, Water, shape};
+use buoyancy_core::{Mesh, Method, Pose, Traversal, Water, mesh::primitives};
 use proptest::prelude::*;
 
 fn bodies() -> Vec<(&'static str, Mesh<f64>)> {
-    let build = |(v, t): shape::Shape<f64>| Mesh::new(v, t).unwrap();
+    let build = |(v, t): primitives::Shape<f64>| Mesh::new(v, t).unwrap();
     vec![
-        ("cube", build(shape::cube(1).unwrap())),
-        ("sphere", build(shape::uv_sphere(1.0, 16, 8).unwrap())),
-        ("torus", build(shape::torus(1.0, 0.3, 24, 12).unwrap())),
+        ("cube", build(primitives::cube(1).unwrap())),
+        ("sphere", build(primitives::uv_sphere(1.0, 16, 8).unwrap())),
+        ("torus", build(primitives::torus(1.0, 0.3, 24, 12).unwrap())),
     ]
 }
 
@@ -85,7 +85,7 @@ proptest! {
 /// and smaller, into the water, were what went wrong (a corner that far above is dry).
 #[test]
 fn a_cube_dipping_a_corner() {
-    let (v, t) = shape::cube::<f64>(1).unwrap();
+    let (v, t) = primitives::cube::<f64>(1).unwrap();
     let cube = Mesh::new(v, t).unwrap();
     let mut negative = 0;
     for k in 0..500 {

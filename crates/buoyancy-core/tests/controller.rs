@@ -7,15 +7,15 @@ use std::sync::Arc;
 
 use buoyancy_core::controller::{BodyOptions, BodyState, Command, Controller, Motion, Part};
 use buoyancy_core::nalgebra::{Matrix3, Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::{Mesh, Pose, shape};
+use buoyancy_core::{Mesh, Pose, mesh::primitives};
 
 fn cube() -> Arc<Mesh<f64>> {
-    let (v, t) = shape::cube::<f64>(2).unwrap();
+    let (v, t) = primitives::cube::<f64>(2).unwrap();
     Arc::new(Mesh::new(v, t).unwrap())
 }
 
 fn sphere() -> Arc<Mesh<f64>> {
-    let (v, t) = shape::uv_sphere::<f64>(0.6, 24, 12).unwrap();
+    let (v, t) = primitives::uv_sphere::<f64>(0.6, 24, 12).unwrap();
     Arc::new(Mesh::new(v, t).unwrap())
 }
 

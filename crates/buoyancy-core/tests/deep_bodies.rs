@@ -8,11 +8,11 @@
 //! 10¹⁵ m gives the result it gives 10 m down (translated), within round-off of the body.
 
 use buoyancy_core::nalgebra::{Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::waves::{AiryComponent, AiryWaves, GerstnerWaves, SurfaceFn, WaterSurface};
-use buoyancy_core::{Buoyancy, Mesh, Method, Pose, Water, shape};
+use buoyancy_core::water::{AiryComponent, AiryWaves, GerstnerWaves, SurfaceFn, WaterSurface};
+use buoyancy_core::{Buoyancy, Mesh, Method, Pose, Water, mesh::primitives};
 
 fn cube() -> Mesh<f64> {
-    let (v, t) = shape::cube(3).unwrap();
+    let (v, t) = primitives::cube(3).unwrap();
     Mesh::new(v, t).unwrap()
 }
 

@@ -24,12 +24,12 @@ use std::f64::consts::PI;
 
 use buoyancy_core::hydrostatics::{EquilibriumOptions, LoadingCondition, Trim};
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::{Error, Mesh, Method, Pose, Water, shape};
+use buoyancy_core::{Error, Mesh, Method, Pose, Water, mesh::primitives};
 
 /// A box `length` (x) × `depth` (y, up) × `beam` (z) about the origin, each face split in
 /// `n × n` squares.
 fn block(length: f64, depth: f64, beam: f64, n: usize) -> Mesh<f64> {
-    let (v, t) = shape::cube(n).unwrap();
+    let (v, t) = primitives::cube(n).unwrap();
     Mesh::new(v, t)
         .unwrap()
         .scaled(&Vector3::new(length, depth, beam))
@@ -176,7 +176,7 @@ fn start_pose_keeps_yaw_and_the_vertical_through_g() {
     // z up, surface at z = 0.3, a box 4 (x) × 2 (y) × 1.5 (z, up); the start pose yawed by
     // 0.7 rad about z and far from the origin. The heel from a transverse offset is that of
     // the y-up box: in this frame e₂ = n × e₁ = y, so G towards −y heels positively.
-    let (v, t) = shape::cube::<f64>(3).unwrap();
+    let (v, t) = primitives::cube::<f64>(3).unwrap();
     let hull = Mesh::new(v, t)
         .unwrap()
         .scaled(&Vector3::new(BOX.0, BOX.2, BOX.1))
@@ -480,7 +480,7 @@ fn integral_of_gz_is_the_change_of_potential() {
 #[test]
 fn slope_of_gz_at_upright_is_gm() {
     let (length, beam, draft) = (2.5, 0.25, 0.15625);
-    let (v, t) = shape::wigley_hull::<f64>(length, beam, draft, 0.1, 81, 33).unwrap();
+    let (v, t) = primitives::wigley_hull::<f64>(length, beam, draft, 0.1, 81, 33).unwrap();
     let hull = Mesh::new(v, t).unwrap();
     let water = Water::default();
     let volume = hull
@@ -685,7 +685,7 @@ fn errors_are_typed() {
 
 #[test]
 fn f32_equilibrium_agrees_with_f64() {
-    let (v, t) = shape::cube::<f32>(3).unwrap();
+    let (v, t) = primitives::cube::<f32>(3).unwrap();
     let hull = Mesh::new(v, t)
         .unwrap()
         .scaled(&Vector3::new(4.0, 1.5, 2.0))

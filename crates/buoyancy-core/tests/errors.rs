@@ -5,12 +5,13 @@ use std::collections::BTreeMap;
 
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
 use buoyancy_core::{
-    Culprit, Defect, DefectKind, Error, Mesh, MeshDefects, Method, Pose, Traversal, Water, shape,
+    Culprit, Defect, DefectKind, Error, Mesh, MeshDefects, Method, Pose, Traversal, Water,
+    mesh::primitives,
 };
 
 /// A torus of 24 × 12 quads: 576 triangles, 288 vertices.
-fn torus() -> shape::Shape<f64> {
-    shape::torus::<f64>(1.0, 0.4, 24, 12).unwrap()
+fn torus() -> primitives::Shape<f64> {
+    primitives::torus::<f64>(1.0, 0.4, 24, 12).unwrap()
 }
 
 fn defects(vertices: Vec<Point3<f64>>, triangles: Vec<[u32; 3]>) -> MeshDefects {
@@ -83,7 +84,7 @@ fn an_inward_wound_mesh_is_flipped() {
 fn zero_area_triangles_are_accepted() {
     // At three edges of a cube, split one of the two triangles at the edge's midpoint and close
     // the slit with a triangle of zero area along the edge: [a, b, midpoint].
-    let (mut v, mut t) = shape::cube::<f64>(2).unwrap();
+    let (mut v, mut t) = primitives::cube::<f64>(2).unwrap();
     let cube = Mesh::new(v.clone(), t.clone()).unwrap();
     for i in [0, 17, 40] {
         let [a, b, c] = t[i];
@@ -394,7 +395,7 @@ fn a_mesh_enclosing_no_volume_says_why() {
     );
 
     // Coordinates so large that the volume overflows.
-    let (v, t) = shape::cube::<f64>(1).unwrap();
+    let (v, t) = primitives::cube::<f64>(1).unwrap();
     let huge = v.iter().map(|p| p * 1e300).collect();
     let overflow = Mesh::new(huge, t).unwrap_err();
     assert!(matches!(overflow, Error::ZeroVolume { .. }), "{overflow:?}");
@@ -430,7 +431,7 @@ fn water_parameters_are_checked() {
     // A non-unit normal is normalised; zero gravity is allowed (and gives no force).
     let w = Water::new(1000.0, 0.0, Vector3::new(0.0, 0.0, 3.0), 1.0).unwrap();
     assert_eq!(w.normal().into_inner(), Vector3::z());
-    let (v, t) = shape::cube::<f64>(1).unwrap();
+    let (v, t) = primitives::cube::<f64>(1).unwrap();
     let b = Mesh::new(v, t)
         .unwrap()
         .buoyancy(&Pose::identity(), &w, Method::Exact)
@@ -506,7 +507,7 @@ fn missing_or_unknown_files_are_errors() {
 /// f32 follows f64 to single precision, including far from the origin of the mesh frame.
 #[test]
 fn f32_matches_f64() {
-    let (v, t) = shape::uv_sphere::<f64>(1.0, 50, 50).unwrap();
+    let (v, t) = primitives::uv_sphere::<f64>(1.0, 50, 50).unwrap();
     let offset = Vector3::new(100.0, -50.0, 20.0);
     let v64: Vec<_> = v.iter().map(|p| p + offset).collect();
     let v32: Vec<_> = v64.iter().map(|p| p.map(|c| c as f32)).collect();
@@ -552,8 +553,8 @@ fn f32_matches_f64() {
 /// parameter, not the allocator's abort.
 #[test]
 fn requests_beyond_the_address_space_are_out_of_memory() {
-    let sea = buoyancy_core::waves::SeaState {
-        spectrum: buoyancy_core::waves::Spectrum::PiersonMoskowitz,
+    let sea = buoyancy_core::water::SeaState {
+        spectrum: buoyancy_core::water::Spectrum::PiersonMoskowitz,
         significant_height: 1.0,
         peak_period: 8.0,
         direction: Vector3::x(),
@@ -562,7 +563,7 @@ fn requests_beyond_the_address_space_are_out_of_memory() {
         seed: 0,
     };
     let error =
-        buoyancy_core::waves::AiryWaves::<f64>::from_sea_state(&sea, &Water::default(), None)
+        buoyancy_core::water::AiryWaves::<f64>::from_sea_state(&sea, &Water::default(), None)
             .unwrap_err();
     assert!(
         matches!(

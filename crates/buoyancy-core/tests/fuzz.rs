@@ -8,7 +8,7 @@
 use buoyancy_core::nalgebra::{Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use buoyancy_core::{Buoyancy, Error, Mesh, Method, Pose, Water, shape};
+use buoyancy_core::{Buoyancy, Error, Mesh, Method, Pose, Water, mesh::primitives};
 use proptest::prelude::*;
 use proptest::test_runner::TestRunner;
 
@@ -50,7 +50,7 @@ fn pose_from((tx, ty, tz, qx, qy, qz, qw): (f64, f64, f64, f64, f64, f64, f64)) 
 /// Index soups: half of them a closed cube with up to three of its indices overwritten (so that
 /// valid meshes are reached, and near misses of every kind), half entirely random.
 fn soup() -> impl Strategy<Value = Vec<[u32; 3]>> {
-    let (_, cube) = shape::cube::<f64>(1).unwrap();
+    let (_, cube) = primitives::cube::<f64>(1).unwrap();
     let edited =
         prop::collection::vec((0..12usize, 0..3usize, 0..10u32), 0..4).prop_map(move |edits| {
             let mut t = cube.clone();
@@ -70,7 +70,7 @@ fn soup() -> impl Strategy<Value = Vec<[u32; 3]>> {
 /// checks little.
 #[test]
 fn arbitrary_soups() {
-    let (cube, _) = shape::cube::<f64>(1).unwrap();
+    let (cube, _) = primitives::cube::<f64>(1).unwrap();
     let valid = AtomicUsize::new(0);
     let cases = 2000;
     let strategy = (
@@ -124,7 +124,7 @@ proptest! {
         level in coordinate(),
         density in prop_oneof![Just(1000.0), 1e-3..1e6f64],
     ) {
-        let (v, t) = shape::cube::<f64>(2).unwrap();
+        let (v, t) = primitives::cube::<f64>(2).unwrap();
         let v = v.iter().enumerate().map(|(i, p)| p + Vector3::new(noise[3 * i], noise[3 * i + 1], noise[3 * i + 2])).collect();
         let Ok(mesh) = Mesh::new(v, t) else { return Ok(()) };
         let Ok(water) = Water::new(density, 9.81, Vector3::new(normal.0, normal.1, normal.2), level) else { return Ok(()) };
@@ -172,25 +172,25 @@ proptest! {
         // The shape at counts of at most 48; the huge counts below, where they must be refused.
         let small = |k: usize| k.min(48);
         let made = match which {
-            0 => shape::cube::<f64>(small(m)),
-            1 => shape::uv_sphere(a, small(m), small(n)),
-            2 => shape::torus(a, b, small(m), small(n)),
-            3 => shape::torus_knot(p, q, a, b, small(m), small(n)),
-            4 => shape::wigley_hull(a, b, c, d, small(m), small(n)),
-            5 => shape::cuboid([a, b, c]),
-            6 => shape::ellipsoid([a, b, c], small(m), small(n)),
-            7 => shape::cylinder(a, b, small(m)),
-            _ => shape::capsule(a, b, small(m), small(n)),
+            0 => primitives::cube::<f64>(small(m)),
+            1 => primitives::uv_sphere(a, small(m), small(n)),
+            2 => primitives::torus(a, b, small(m), small(n)),
+            3 => primitives::torus_knot(p, q, a, b, small(m), small(n)),
+            4 => primitives::wigley_hull(a, b, c, d, small(m), small(n)),
+            5 => primitives::cuboid([a, b, c]),
+            6 => primitives::ellipsoid([a, b, c], small(m), small(n)),
+            7 => primitives::cylinder(a, b, small(m)),
+            _ => primitives::capsule(a, b, small(m), small(n)),
         };
         // Huge counts too, where the product overflows the indices or the memory.
         if m > 48 || n > 48 {
             let huge = match which {
-                0 => shape::cube::<f64>(m),
-                1 => shape::uv_sphere(1.0, m, n.max(2)),
-                2 => shape::torus(1.0, 0.3, m, n.max(3)),
-                6 => shape::ellipsoid([1.0, 1.0, 1.0], m, n.max(2)),
-                7 => shape::cylinder(1.0, 1.0, m),
-                _ => shape::capsule(1.0, 1.0, m.max(3), 2 * (n / 2).max(1)),
+                0 => primitives::cube::<f64>(m),
+                1 => primitives::uv_sphere(1.0, m, n.max(2)),
+                2 => primitives::torus(1.0, 0.3, m, n.max(3)),
+                6 => primitives::ellipsoid([1.0, 1.0, 1.0], m, n.max(2)),
+                7 => primitives::cylinder(1.0, 1.0, m),
+                _ => primitives::capsule(1.0, 1.0, m.max(3), 2 * (n / 2).max(1)),
             };
             if let Err(e) = &huge {
                 prop_assert!(shape_error(e), "{which}: {e:?}");
@@ -271,7 +271,7 @@ proptest! {
         time in coordinate(),
         pose in (coordinate(), coordinate(), coordinate(), coordinate(), coordinate(), coordinate(), coordinate()),
     ) {
-        use buoyancy_core::waves::{AiryComponent, AiryWaves};
+        use buoyancy_core::water::{AiryComponent, AiryWaves};
         let components = components
             .into_iter()
             .map(|(amplitude, wavelength, (x, y, z), phase)| AiryComponent {
@@ -288,7 +288,7 @@ proptest! {
                 return Ok(());
             }
         };
-        let (v, t) = shape::cube::<f64>(2).unwrap();
+        let (v, t) = primitives::cube::<f64>(2).unwrap();
         let mesh = Mesh::new(v, t).unwrap();
         let pose = pose_from(pose);
         let water = Water::default();
@@ -325,7 +325,7 @@ proptest! {
         drafts in prop::collection::vec(coordinate(), 0..5),
     ) {
         use buoyancy_core::hydrostatics::{EquilibriumOptions, LoadingCondition, TableOptions, Trim};
-        let (v, t) = shape::cuboid::<f64>([1.0, 0.5, 0.25]).unwrap();
+        let (v, t) = primitives::cuboid::<f64>([1.0, 0.5, 0.25]).unwrap();
         let mesh = Mesh::new(v, t).unwrap();
         let water = Water::default();
         let typed = |e: &Error| {

@@ -6,7 +6,7 @@ use std::f64::consts::FRAC_PI_2;
 
 use buoyancy_core::hydrostatics::{HydrostaticRow, TableOptions};
 use buoyancy_core::nalgebra::{Point3, UnitQuaternion, Vector3};
-use buoyancy_core::{Error, Mesh, Water, shape};
+use buoyancy_core::{Error, Mesh, Water, mesh::primitives};
 
 fn relative(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs()
@@ -15,7 +15,7 @@ fn relative(a: f64, b: f64) -> f64 {
 /// A box `length` (x) × `depth` (y, up) × `beam` (z), each face split in `n × n` squares, its
 /// center at `center` (mesh frame).
 fn block(length: f64, depth: f64, beam: f64, n: usize, center: Vector3<f64>) -> Mesh<f64> {
-    let (v, t) = shape::cube(n).unwrap();
+    let (v, t) = primitives::cube(n).unwrap();
     Mesh::new(v, t)
         .unwrap()
         .scaled(&Vector3::new(length, depth, beam))
@@ -126,7 +126,8 @@ const DRAFT: f64 = 0.15625;
 const FREEBOARD: f64 = 0.1;
 
 fn wigley(stations: usize, waterlines: usize) -> Mesh<f64> {
-    let (v, t) = shape::wigley_hull(LENGTH, BEAM, DRAFT, FREEBOARD, stations, waterlines).unwrap();
+    let (v, t) =
+        primitives::wigley_hull(LENGTH, BEAM, DRAFT, FREEBOARD, stations, waterlines).unwrap();
     Mesh::new(v, t).unwrap()
 }
 
@@ -313,7 +314,7 @@ fn bad_options_are_errors_naming_the_option() {
 
 #[test]
 fn f32_agrees_with_f64() {
-    let (v, t) = shape::wigley_hull::<f32>(LENGTH, BEAM, DRAFT, FREEBOARD, 41, 17).unwrap();
+    let (v, t) = primitives::wigley_hull::<f32>(LENGTH, BEAM, DRAFT, FREEBOARD, 41, 17).unwrap();
     let hull32 = Mesh::new(v, t).unwrap();
     let hull64 = wigley(41, 17);
     let drafts = [0.05, DRAFT, 0.2];

@@ -8,7 +8,7 @@ use std::f64::consts::PI;
 
 use buoyancy_core::hydrostatics::{Hydrostatics, LoadingCondition, Waterplane};
 use buoyancy_core::nalgebra::{Isometry3, Matrix3, Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::{Error, Mesh, Method, Pose, Water, shape};
+use buoyancy_core::{Error, Mesh, Method, Pose, Water, mesh::primitives};
 
 fn at(x: f64, y: f64, z: f64) -> Pose<f64> {
     Pose::from_parts(Translation3::new(x, y, z), UnitQuaternion::identity())
@@ -17,7 +17,7 @@ fn at(x: f64, y: f64, z: f64) -> Pose<f64> {
 /// A box `length` (x) × `depth` (y, up) × `beam` (z) about the origin, each face split in
 /// `n × n` squares: vertex rows at `y = depth·(k/n − 1/2)`.
 fn block(length: f64, depth: f64, beam: f64, n: usize) -> Mesh<f64> {
-    let (v, t) = shape::cube(n).unwrap();
+    let (v, t) = primitives::cube(n).unwrap();
     Mesh::new(v, t)
         .unwrap()
         .scaled(&Vector3::new(length, depth, beam))
@@ -187,7 +187,7 @@ fn torus_at_its_equator_is_an_annulus() {
     let water = Water::default();
     let mut previous = None;
     for segments in [16, 32, 64, 128, 256] {
-        let (v, t) = shape::torus::<f64>(major, minor, segments, 16).unwrap();
+        let (v, t) = primitives::torus::<f64>(major, minor, segments, 16).unwrap();
         let torus = Mesh::new(v, t).unwrap();
         let wp = torus.waterplane(&Pose::identity(), &water).unwrap();
         // The outer ring of vertices lies in the surface, the inner one within 1e-16 of it:
@@ -230,7 +230,7 @@ fn sphere_metacentre_is_its_center() {
     let rings = [3, 6, 8, 10, 13];
     let mut previous: Option<f64> = None;
     for n in [16, 32, 64, 128, 256] {
-        let (v, t) = shape::uv_sphere::<f64>(radius, n, n).unwrap();
+        let (v, t) = primitives::uv_sphere::<f64>(radius, n, n).unwrap();
         let sphere = Mesh::new(v, t).unwrap();
         let loading = LoadingCondition::new(Point3::origin()).unwrap();
         let worst = rings
@@ -289,7 +289,7 @@ fn tilted_large_cube_section_through_the_hierarchy() {
 fn two_hulls_add_their_waterplanes_about_the_common_center() {
     // A catamaran: two boxes L × B, their centerlines ±s apart across; one mesh.
     let (length, beam, depth, s) = (5.0, 0.8, 1.0, 1.5);
-    let (v, t) = shape::cube::<f64>(2).unwrap();
+    let (v, t) = primitives::cube::<f64>(2).unwrap();
     let mut vertices = Vec::new();
     let mut triangles = Vec::new();
     for side in [-1.0, 1.0] {
@@ -479,9 +479,9 @@ fn dry_and_submerged_bodies_have_no_waterplane() {
 
 #[test]
 fn f32_agrees_with_f64() {
-    let (v, t) = shape::torus::<f32>(1.0, 0.4, 48, 16).unwrap();
+    let (v, t) = primitives::torus::<f32>(1.0, 0.4, 48, 16).unwrap();
     let torus32 = Mesh::new(v, t).unwrap();
-    let (v, t) = shape::torus::<f64>(1.0, 0.4, 48, 16).unwrap();
+    let (v, t) = primitives::torus::<f64>(1.0, 0.4, 48, 16).unwrap();
     let torus64 = Mesh::new(v, t).unwrap();
     let rotation = UnitQuaternion::from_scaled_axis(Vector3::new(0.2, 0.5, -0.1));
     let wp32 = torus32
@@ -584,7 +584,7 @@ fn wigley_hull_matches_the_analytic_figures() {
     for k in 0..5 {
         let (stations, waterlines) = (10 * (1 << k) + 1, 4 * (1 << k) + 1);
         let (v, t) =
-            shape::wigley_hull::<f64>(length, beam, draft, 0.1, stations, waterlines).unwrap();
+            primitives::wigley_hull::<f64>(length, beam, draft, 0.1, stations, waterlines).unwrap();
         let hull = Mesh::new(v, t).unwrap();
         // The mesh's centroid is the center of gravity: KG does not enter BM.
         let loading = LoadingCondition::new(hull.centroid()).unwrap();

@@ -8,7 +8,7 @@
 mod common;
 
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::{Buoyancy, Mesh, Method, Pose, Traversal, Water, shape};
+use buoyancy_core::{Buoyancy, Mesh, Method, Pose, Traversal, Water, mesh::primitives};
 use common::{all_meshes, assert_close, assert_close_v, pose, pose_at_height, reference};
 use proptest::prelude::*;
 use proptest::sample::Index;
@@ -255,7 +255,7 @@ fn check_exact_invariants(name: &str, mesh: &Mesh<f64>, pose: &Pose<f64>, water:
 
 /// A star-shaped, non-convex closed mesh: a UV sphere whose vertices are moved to the given radii.
 fn star_mesh(radii: &[f64]) -> Mesh<f64> {
-    let (v, t) = shape::uv_sphere::<f64>(1.0, 12, 8).unwrap();
+    let (v, t) = primitives::uv_sphere::<f64>(1.0, 12, 8).unwrap();
     assert_eq!(v.len(), radii.len());
     let v = v.iter().zip(radii).map(|(p, r)| p * *r).collect();
     Mesh::new(v, t).unwrap()
@@ -395,7 +395,7 @@ proptest! {
         height in -0.9..0.9f64,
         on_corner in any::<bool>(),
     ) {
-        let (v, t) = shape::cube::<f64>(5).unwrap();
+        let (v, t) = primitives::cube::<f64>(5).unwrap();
         let mesh = Mesh::new(v, t).unwrap();
         let water = Water::default();
         let corner_up = if on_corner {
@@ -520,7 +520,7 @@ proptest! {
     /// Axis-aligned bodies with whole rows of vertices in the surface.
     #[test]
     fn hierarchy_equals_scan_with_vertices_on_the_surface(row in 0..=8usize, yaw_quarter in 0..4u32) {
-        let (v, t) = shape::cube::<f64>(8).unwrap();
+        let (v, t) = primitives::cube::<f64>(8).unwrap();
         let mesh = Mesh::new(v, t).unwrap();
         let h = 0.5 - row as f64 / 8.0;
         let rotation = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), std::f64::consts::FRAC_PI_2 * yaw_quarter as f64);
@@ -532,7 +532,7 @@ proptest! {
 /// Vertex rows lying exactly in the surface: the exact methods stay on the analytic curve.
 #[test]
 fn vertices_exactly_on_the_surface() {
-    let (v, t) = shape::cube::<f64>(4).unwrap();
+    let (v, t) = primitives::cube::<f64>(4).unwrap();
     let mesh = Mesh::new(v, t).unwrap();
     let water = Water::new(1.0, 1.0, Vector3::y(), 0.0).unwrap();
     for k in 0..=4 {
@@ -562,7 +562,7 @@ fn vertices_exactly_on_the_surface() {
 fn parallel_equals_serial() {
     // 105,340 triangles: the scan has 26 chunks, and the hierarchy's root is split in parallel
     // (from 100,000 triangles).
-    let (v, t) = shape::uv_sphere::<f64>(1.0, 230, 230).unwrap();
+    let (v, t) = primitives::uv_sphere::<f64>(1.0, 230, 230).unwrap();
     let mesh = Mesh::new(v, t).unwrap();
     let water = Water::default();
     for (i, h) in [-1.2, -0.6, 0.0, 0.37, 0.9].into_iter().enumerate() {

@@ -5,7 +5,7 @@
 
 use buoyancy_core::hydrostatics::{LoadingCondition, TableOptions};
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::{DefectKind, Error, Mesh, Method, Pose, Water, shape};
+use buoyancy_core::{DefectKind, Error, Mesh, Method, Pose, Water, mesh::primitives};
 
 fn relative(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs().max(1e-300)
@@ -14,7 +14,7 @@ fn relative(a: f64, b: f64) -> f64 {
 /// A box `length` (x) × `depth` (y, up) × `beam` (z) about the origin, each face split in
 /// `n × n` squares: its vertices and triangles.
 fn box_parts(length: f64, depth: f64, beam: f64, n: usize) -> (Vec<Point3<f64>>, Vec<[u32; 3]>) {
-    let (v, t) = shape::cube::<f64>(n).unwrap();
+    let (v, t) = primitives::cube::<f64>(n).unwrap();
     let v = v
         .iter()
         .map(|p| Point3::new(p.x * length, p.y * depth, p.z * beam))
@@ -186,7 +186,7 @@ const FREEBOARD: f64 = 0.1;
 
 #[test]
 fn wigley_hull_without_its_deck_equals_the_closed_hull() {
-    let (v, t) = shape::wigley_hull::<f64>(LENGTH, BEAM, DRAFT, FREEBOARD, 41, 17).unwrap();
+    let (v, t) = primitives::wigley_hull::<f64>(LENGTH, BEAM, DRAFT, FREEBOARD, 41, 17).unwrap();
     let closed = Mesh::new(v.clone(), t.clone()).unwrap();
     let hull = without(&v, &t, |p| p.y == FREEBOARD);
     assert_eq!(hull.len(), t.len() - 2 * (41 - 2));
@@ -292,8 +292,8 @@ fn a_mesh_without_opening_is_built_as_mesh_new_builds_it() {
         UnitQuaternion::from_scaled_axis(Vector3::new(0.3, -0.2, 0.5)),
     );
     for (v, t) in [
-        shape::torus::<f64>(1.0, 0.4, 32, 12).unwrap(),
-        shape::wigley_hull::<f64>(LENGTH, BEAM, DRAFT, FREEBOARD, 21, 9).unwrap(),
+        primitives::torus::<f64>(1.0, 0.4, 32, 12).unwrap(),
+        primitives::wigley_hull::<f64>(LENGTH, BEAM, DRAFT, FREEBOARD, 21, 9).unwrap(),
     ] {
         let a = Mesh::new(v.clone(), t.clone()).unwrap();
         let b = Mesh::close_openings(v, t).unwrap();
@@ -314,7 +314,7 @@ fn a_mesh_without_opening_is_built_as_mesh_new_builds_it() {
 #[test]
 fn other_defects_and_pinched_rims_are_refused() {
     // A triangle soup: every edge open, the weld hint, no lids.
-    let (v, t) = shape::cube::<f64>(1).unwrap();
+    let (v, t) = primitives::cube::<f64>(1).unwrap();
     let soup_v: Vec<_> = t.iter().flat_map(|t| t.map(|i| v[i as usize])).collect();
     let soup_t: Vec<_> = (0..t.len() as u32)
         .map(|k| [3 * k, 3 * k + 1, 3 * k + 2])
@@ -360,7 +360,7 @@ fn other_defects_and_pinched_rims_are_refused() {
 
 #[test]
 fn f32_hulls_close_too() {
-    let (v, t) = shape::wigley_hull::<f32>(LENGTH, BEAM, DRAFT, FREEBOARD, 41, 17).unwrap();
+    let (v, t) = primitives::wigley_hull::<f32>(LENGTH, BEAM, DRAFT, FREEBOARD, 41, 17).unwrap();
     let closed = Mesh::new(v.clone(), t.clone()).unwrap();
     let hull: Vec<[u32; 3]> = t
         .iter()
@@ -381,7 +381,7 @@ fn f32_hulls_close_too() {
 /// A unit cube with the upper half of its +x face open (a planar hole in its side, y from 0 to
 /// 1/2), closed by a lid.
 fn holed_box() -> Mesh<f64> {
-    let (v, t) = shape::cube::<f64>(2).unwrap();
+    let (v, t) = primitives::cube::<f64>(2).unwrap();
     let hull: Vec<[u32; 3]> = t
         .into_iter()
         .filter(|t| {

@@ -9,21 +9,21 @@ use std::sync::Arc;
 use buoyancy_core::controller::{
     BodyOptions, BodyState, Command, Controller, DampingResolution, Motion, Part,
 };
+use buoyancy_core::mesh::{MIN_REDUCED_TRIANGLES, ReducedMesh};
 use buoyancy_core::nalgebra::{Matrix3, Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::reduced_mesh::{MIN_REDUCED_TRIANGLES, ReducedMesh};
-use buoyancy_core::{DampingCoefficients, Mesh, Pose, Water, shape};
+use buoyancy_core::{DampingCoefficients, Mesh, Pose, Water, mesh::primitives};
 
 /// The meshes reduced here: a fine sphere, a fine torus, and the bunny when the samples exist.
 fn meshes() -> Vec<(String, Mesh<f64>)> {
-    let build = |(v, t): shape::Shape<f64>| Mesh::new(v, t).unwrap();
+    let build = |(v, t): primitives::Shape<f64>| Mesh::new(v, t).unwrap();
     let mut meshes = vec![
         (
             "sphere".to_string(),
-            build(shape::uv_sphere(0.3, 64, 32).unwrap()),
+            build(primitives::uv_sphere(0.3, 64, 32).unwrap()),
         ),
         (
             "torus".to_string(),
-            build(shape::torus(1.0, 0.4, 128, 48).unwrap()),
+            build(primitives::torus(1.0, 0.4, 128, 48).unwrap()),
         ),
     ];
     meshes.extend(
@@ -162,20 +162,20 @@ fn the_reduced_damping_is_close_to_the_full_damping() {
 /// collapse keeps its full mesh.
 #[test]
 fn small_meshes_are_not_reduced() {
-    let (v, t) = shape::torus_knot::<f64>(2, 3, 1.0, 0.1, 256, 16).unwrap();
+    let (v, t) = primitives::torus_knot::<f64>(2, 3, 1.0, 0.1, 256, 16).unwrap();
     let knot = Mesh::new(v, t).unwrap();
     assert!(ReducedMesh::new(&knot, 256).is_none());
-    let (v, t) = shape::cube::<f64>(1).unwrap();
+    let (v, t) = primitives::cube::<f64>(1).unwrap();
     let cube = Mesh::new(v, t).unwrap();
     assert!(ReducedMesh::new(&cube, 0).is_none());
     assert!(ReducedMesh::new(&cube, 12).is_none());
-    let (v, t) = shape::uv_sphere::<f64>(1.0, 64, 32).unwrap();
+    let (v, t) = primitives::uv_sphere::<f64>(1.0, 64, 32).unwrap();
     let sphere = Mesh::new(v, t).unwrap();
     assert!(ReducedMesh::new(&sphere, sphere.triangle_count()).is_none());
     let least = ReducedMesh::new(&sphere, 1).unwrap();
     assert!(least.triangle_count() <= MIN_REDUCED_TRIANGLES);
     // f32 meshes too, with finite damping.
-    let (v, t) = shape::uv_sphere::<f32>(1.0, 64, 32).unwrap();
+    let (v, t) = primitives::uv_sphere::<f32>(1.0, 64, 32).unwrap();
     let sphere = Mesh::new(v, t).unwrap();
     let reduced = ReducedMesh::new(&sphere, 200).unwrap();
     let pose = Pose::from_parts(
@@ -240,11 +240,11 @@ fn step_damping(
 /// resolution, and that of a large one over its reduced copy by default, exactly when asked.
 #[test]
 fn the_controller_reduces_large_meshes_only() {
-    let (v, t) = shape::cube::<f64>(2).unwrap();
+    let (v, t) = primitives::cube::<f64>(2).unwrap();
     let cube = Arc::new(Mesh::new(v, t).unwrap());
     let full = step_damping(&cube, DampingResolution::Full, None);
     assert_eq!(full, step_damping(&cube, DampingResolution::DEFAULT, None));
-    let (v, t) = shape::uv_sphere::<f64>(0.5, 64, 32).unwrap();
+    let (v, t) = primitives::uv_sphere::<f64>(0.5, 64, 32).unwrap();
     let sphere = Arc::new(Mesh::new(v, t).unwrap());
     let full = step_damping(&sphere, DampingResolution::Full, None);
     let reduced = step_damping(&sphere, DampingResolution::DEFAULT, None);

@@ -7,7 +7,7 @@ use buoyancy_core::hydrostatics::{
     TableOptions, Trim, Waterplane,
 };
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::{Buoyancy, Mesh, Method, Pose, Water, shape};
+use buoyancy_core::{Buoyancy, Mesh, Method, Pose, Water, mesh::primitives};
 
 fn round_trip<S>(value: &S) -> S
 where
@@ -19,7 +19,7 @@ where
 
 #[test]
 fn results_read_back_equal() {
-    let (v, t) = shape::cuboid([1.0, 0.5, 0.25]).unwrap();
+    let (v, t) = primitives::cuboid([1.0, 0.5, 0.25]).unwrap();
     let mesh = Mesh::new(v, t).unwrap();
     let water = Water::default();
     // An irrational pose, so that the values have all their digits.

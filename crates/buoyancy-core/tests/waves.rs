@@ -4,8 +4,8 @@
 mod common;
 
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::waves::{AiryComponent, AiryWaves, CalmSurface, HeightGrid, SurfaceFn};
-use buoyancy_core::{Mesh, Method, Pose, Traversal, Water, shape};
+use buoyancy_core::water::{AiryComponent, AiryWaves, CalmSurface, HeightGrid, SurfaceFn};
+use buoyancy_core::{Mesh, Method, Pose, Traversal, Water, mesh::primitives};
 use common::{all_meshes, assert_close, assert_close_v};
 
 fn pose(x: f64, y: f64, z: f64, roll: f64, pitch: f64, yaw: f64) -> Pose<f64> {
@@ -125,7 +125,7 @@ fn a_wall_sided_box_in_a_regular_wave() {
     let weight = water.specific_weight();
     let mut errors = Vec::new();
     for n in [8, 16, 32] {
-        let (v, t) = shape::cube::<f64>(n).unwrap();
+        let (v, t) = primitives::cube::<f64>(n).unwrap();
         let unit = Mesh::new(v, t).unwrap();
         let b = unit.scaled(&Vector3::new(length, 1.0, beam)).unwrap();
         // The box's bottom at y = −T: its center at 0.5 − T.
@@ -165,7 +165,7 @@ fn a_wall_sided_box_wetted_area_in_a_regular_wave() {
     let omega = waves.angular_frequency(0, water.gravity());
     let mut errors = Vec::new();
     for n in [8, 16, 32] {
-        let (v, t) = shape::cube::<f64>(n).unwrap();
+        let (v, t) = primitives::cube::<f64>(n).unwrap();
         let unit = Mesh::new(v, t).unwrap();
         let b = unit.scaled(&Vector3::new(length, 1.0, beam)).unwrap();
         let p = pose(0.0, 0.5 - draft, 0.0, 0.0, 0.0, 0.0);
@@ -266,7 +266,7 @@ fn a_grid_of_a_plane_is_the_plane() {
     )
     .unwrap();
     let ramp = SurfaceFn(move |q: &Point3<f64>, _t: f64| s * q.x + b);
-    let (v, t) = shape::uv_sphere::<f64>(1.0, 24, 12).unwrap();
+    let (v, t) = primitives::uv_sphere::<f64>(1.0, 24, 12).unwrap();
     let ball = Mesh::new(v, t).unwrap();
     let p = pose(0.3, 0.2, -0.4, 0.2, 0.1, 0.0);
     let a = ball
@@ -285,7 +285,7 @@ fn a_grid_of_a_plane_is_the_plane() {
 /// Bad input is a typed error, never a NaN.
 #[test]
 fn bad_times_and_surfaces_are_errors() {
-    let (v, t) = shape::cube::<f64>(2).unwrap();
+    let (v, t) = primitives::cube::<f64>(2).unwrap();
     let cube = Mesh::new(v, t).unwrap();
     let w = Water::default();
     let p = Pose::identity();
@@ -304,8 +304,8 @@ fn bad_times_and_surfaces_are_errors() {
 fn walking_within_the_bound_changes_nothing() {
     let water = Water::default();
     let sea = AiryWaves::from_sea_state(
-        &buoyancy_core::waves::SeaState {
-            spectrum: buoyancy_core::waves::Spectrum::Jonswap { gamma: 3.3 },
+        &buoyancy_core::water::SeaState {
+            spectrum: buoyancy_core::water::Spectrum::Jonswap { gamma: 3.3 },
             significant_height: 0.5,
             peak_period: 3.0,
             direction: Vector3::new(1.0, 0.0, 0.4),
@@ -319,7 +319,7 @@ fn walking_within_the_bound_changes_nothing() {
     .unwrap();
     let unbounded = SurfaceFn(|q: &Point3<f64>, t: f64| {
         let mut eta = [0.0];
-        buoyancy_core::waves::WaterSurface::elevations(&sea, &Water::default(), &[*q], t, &mut eta)
+        buoyancy_core::water::WaterSurface::elevations(&sea, &Water::default(), &[*q], t, &mut eta)
             .unwrap();
         eta[0]
     });
@@ -469,7 +469,7 @@ fn a_submerged_ball_gets_the_divergence_theorem() {
     let expected_x = weight * amplitude * k * phase.sin() * integral;
     let mut errors = Vec::new();
     for (slices, stacks) in [(32, 16), (64, 32), (128, 64)] {
-        let (v, t) = shape::uv_sphere::<f64>(1.0, slices, stacks).unwrap();
+        let (v, t) = primitives::uv_sphere::<f64>(1.0, slices, stacks).unwrap();
         let ball = Mesh::new(v, t).unwrap();
         let b = ball
             .buoyancy_in_waves(&pose(0.0, -5.0, 0.0, 0.0, 0.0, 0.0), &water, &waves, 0.0)
@@ -489,7 +489,7 @@ fn a_submerged_ball_gets_the_divergence_theorem() {
 
 mod random_seas {
     use super::*;
-    use buoyancy_core::waves::{GerstnerWaves, SeaState, Spectrum};
+    use buoyancy_core::water::{GerstnerWaves, SeaState, Spectrum};
     use proptest::prelude::*;
 
     proptest! {
@@ -535,7 +535,7 @@ mod random_seas {
                 phase: 0.0,
             }])
             .unwrap();
-            for surface in [&sea as &dyn buoyancy_core::waves::WaterSurface<f64>, &gerstner] {
+            for surface in [&sea as &dyn buoyancy_core::water::WaterSurface<f64>, &gerstner] {
                 let b = mesh.buoyancy_in_waves(&p, &water, surface, time).unwrap();
                 let numbers = [b.submerged_volume]
                     .into_iter()
@@ -588,7 +588,7 @@ mod froude_krylov {
             .acceleration;
         let mut errors = Vec::new();
         for (slices, stacks) in [(24, 12), (48, 24), (96, 48)] {
-            let (v, t) = shape::uv_sphere::<f64>(1.0, slices, stacks).unwrap();
+            let (v, t) = primitives::uv_sphere::<f64>(1.0, slices, stacks).unwrap();
             let ball = Mesh::new(v, t).unwrap();
             let p = pose(center.x, center.y, center.z, 0.0, 0.0, 0.0);
             let b = ball
@@ -619,7 +619,7 @@ mod froude_krylov {
         let k = 2.0 * std::f64::consts::PI / wavelength;
         let omega = waves.angular_frequency(0, water.gravity());
         let weight = water.specific_weight();
-        let (v, t) = shape::cube::<f64>(16).unwrap();
+        let (v, t) = primitives::cube::<f64>(16).unwrap();
         let b = Mesh::new(v, t)
             .unwrap()
             .scaled(&Vector3::new(length, 1.0, beam))

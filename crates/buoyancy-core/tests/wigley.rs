@@ -1,11 +1,11 @@
-//! The Wigley hull (`shape::wigley_hull`) against its analytic hydrostatics: below the design
+//! The Wigley hull (`primitives::wigley_hull`) against its analytic hydrostatics: below the design
 //! waterline `y = 0` it displaces `V = 4LBT/9` with its center of buoyancy `KB = 5T/8` above the
 //! keel, and its wall-sided topside of freeboard `D` holds `2LBD/3`. The mesh's vertices lie on
 //! the hull, so the underwater figures converge as the square of the spacing; the topside is a
 //! prism on the polygonal waterline, whose area the trapezoidal rule gives exactly.
 
 use buoyancy_core::nalgebra::{Translation3, UnitQuaternion};
-use buoyancy_core::{Buoyancy, Error, Mesh, Method, Pose, Water, shape};
+use buoyancy_core::{Buoyancy, Error, Mesh, Method, Pose, Water, mesh::primitives};
 
 /// The Wigley benchmark's proportions, L/B = 10 and L/T = 16, with a freeboard of 0.64 T.
 const LENGTH: f64 = 2.5;
@@ -17,7 +17,7 @@ const FREEBOARD: f64 = 0.1;
 const RESOLUTIONS: [(usize, usize); 3] = [(21, 9), (41, 17), (81, 33)];
 
 fn hull(stations: usize, waterlines: usize) -> Mesh<f64> {
-    let (v, t) = shape::wigley_hull(LENGTH, BEAM, DRAFT, FREEBOARD, stations, waterlines)
+    let (v, t) = primitives::wigley_hull(LENGTH, BEAM, DRAFT, FREEBOARD, stations, waterlines)
         .unwrap_or_else(|e| panic!("{stations} × {waterlines}: {e}"));
     Mesh::new(v, t).unwrap_or_else(|e| panic!("{stations} × {waterlines}: {e}"))
 }
@@ -116,7 +116,8 @@ fn enclosed_volume_is_the_underwater_part_plus_the_topside() {
     ] {
         for (stations, waterlines) in [(3, 2), (4, 3), (21, 9), (64, 5)] {
             let (v, t) =
-                shape::wigley_hull(length, beam, draft, freeboard, stations, waterlines).unwrap();
+                primitives::wigley_hull(length, beam, draft, freeboard, stations, waterlines)
+                    .unwrap();
             let mesh = Mesh::new(v, t).unwrap();
             let below = underwater(&mesh).submerged_volume;
             let above = topside(length, beam, freeboard, stations);
@@ -238,9 +239,10 @@ fn meshes_are_valid_over_a_range_of_parameters() {
             for waterlines in [2, 3, 7, 16] {
                 let what =
                     format!("{length} × {beam} × {draft} + {freeboard}, {stations} × {waterlines}");
-                let (v, t) =
-                    shape::wigley_hull::<f64>(length, beam, draft, freeboard, stations, waterlines)
-                        .unwrap();
+                let (v, t) = primitives::wigley_hull::<f64>(
+                    length, beam, draft, freeboard, stations, waterlines,
+                )
+                .unwrap();
                 assert_eq!(
                     v.len(),
                     2 * (stations - 1) * waterlines + stations,
@@ -278,7 +280,7 @@ fn meshes_are_valid_over_a_range_of_parameters() {
         }
     }
     // Single precision too.
-    let (v, t) = shape::wigley_hull::<f32>(2.5, 0.25, 0.15625, 0.1, 41, 17).unwrap();
+    let (v, t) = primitives::wigley_hull::<f32>(2.5, 0.25, 0.15625, 0.1, 41, 17).unwrap();
     let mesh = Mesh::new(v, t).unwrap();
     assert!(!mesh.was_reoriented());
     let b = mesh
@@ -294,11 +296,11 @@ fn meshes_are_valid_over_a_range_of_parameters() {
 
 #[test]
 fn bad_parameters_are_errors_naming_the_parameter() {
-    let parameter = |r: Result<shape::Shape<f64>, Error>| match r {
+    let parameter = |r: Result<primitives::Shape<f64>, Error>| match r {
         Err(Error::InvalidShape { parameter, .. }) => parameter,
         other => panic!("{:?}", other.map(|(v, t)| (v.len(), t.len()))),
     };
-    let hull = |l, b, t, d, s, w| parameter(shape::wigley_hull(l, b, t, d, s, w));
+    let hull = |l, b, t, d, s, w| parameter(primitives::wigley_hull(l, b, t, d, s, w));
     for bad in [0.0, -1.0, -0.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
         assert_eq!(hull(bad, 0.25, 0.15, 0.1, 21, 9), "length");
         assert_eq!(hull(2.5, bad, 0.15, 0.1, 21, 9), "beam");
@@ -317,7 +319,7 @@ fn bad_parameters_are_errors_naming_the_parameter() {
     assert_eq!(hull(2.5, 0.25, 0.15, 0.1, 21, usize::MAX), "stations");
     // The first bad parameter is the one named.
     assert_eq!(hull(f64::NAN, 0.0, 0.15, 0.1, 1, 1), "length");
-    let message = shape::wigley_hull::<f64>(2.5, 0.25, 0.15, 0.1, 21, 1)
+    let message = primitives::wigley_hull::<f64>(2.5, 0.25, 0.15, 0.1, 21, 1)
         .unwrap_err()
         .to_string();
     assert_eq!(

@@ -3,7 +3,7 @@
 
 use buoyancy_core::Error;
 use buoyancy_core::nalgebra::Vector3;
-use buoyancy_core::waves::{AiryComponent, AiryWaves};
+use buoyancy_core::water::{AiryComponent, AiryWaves};
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::{PyTuple, PyType};

@@ -9,7 +9,7 @@ use buoyancy_core::controller::{
     BodyOptions, BodyState, Command, Controller, DampingResolution, Part, Settings, SharedSurface,
 };
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::waves::WaterSurface;
+use buoyancy_core::water::WaterSurface;
 use buoyancy_core::{DampingCoefficients, Error, Method, Pose, Water};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2};

@@ -1,6 +1,6 @@
 //! `GerstnerWaves`: trochoidal waves in deep water, the core's `GerstnerWaves`.
 
-use buoyancy_core::waves::GerstnerWaves;
+use buoyancy_core::water::GerstnerWaves;
 use pyo3::prelude::*;
 use pyo3::types::{PyTuple, PyType};
 

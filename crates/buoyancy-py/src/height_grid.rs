@@ -5,7 +5,7 @@
 use std::sync::{RwLock, RwLockReadGuard};
 
 use buoyancy_core::nalgebra::{Point3, Vector3};
-use buoyancy_core::waves::{HeightGrid, WaterSurface};
+use buoyancy_core::water::{HeightGrid, WaterSurface};
 use buoyancy_core::{Error, Water};
 use numpy::IntoPyArray;
 use numpy::PyArray2;

@@ -372,7 +372,7 @@ impl PyMesh {
     /// A closed mesh from a tessellation that repeats its vertices (the seams and poles of an
     /// engine's sphere, cylinder or capsule, such as ``rapier3d``'s ``to_trimesh``; an STL-like
     /// list of corners face by face): vertices within 1e-6 of the mesh's extent of an earlier one
-    /// are merged and the triangles that collapse dropped (``buoyancy_core::shape::weld``), then
+    /// are merged and the triangles that collapse dropped (``buoyancy_core::mesh::primitives::weld``), then
     /// the mesh is built as ``Mesh(vertices, faces)`` builds it.
     ///
     /// Examples
@@ -392,7 +392,7 @@ impl PyMesh {
         faces: &Bound<'_, PyAny>,
     ) -> PyResult<Self> {
         let (vertices, mut triangles) = mesh_arrays(vertices, faces)?;
-        buoyancy_core::shape::weld(&vertices, &mut triangles);
+        buoyancy_core::mesh::primitives::weld(&vertices, &mut triangles);
         PyMesh::build(py, (vertices, triangles))
     }
 

@@ -2,7 +2,7 @@
 //! `SeaState`, drawn into Airy components for the gravity and up normal of a water.
 
 use buoyancy_core::nalgebra::Vector3;
-use buoyancy_core::waves::{AiryWaves, SeaState, Spectrum};
+use buoyancy_core::water::{AiryWaves, SeaState, Spectrum};
 use buoyancy_core::{Error, Water};
 use pyo3::prelude::*;
 use pyo3::types::{PyTuple, PyType};

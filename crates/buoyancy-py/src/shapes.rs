@@ -25,7 +25,7 @@ pub fn cube(py: Python<'_>, n: Option<&Bound<'_, PyAny>>) -> PyResult<PyMesh> {
     let n = count_or(n, "n", 1)?;
     PyMesh::build(
         py,
-        buoyancy_core::shape::cube(n).map_err(|e| to_py(e, None))?,
+        buoyancy_core::mesh::primitives::cube(n).map_err(|e| to_py(e, None))?,
     )
 }
 
@@ -50,7 +50,8 @@ pub fn uv_sphere(
     let stacks = count_or(stacks, "stacks", 16)?;
     PyMesh::build(
         py,
-        buoyancy_core::shape::uv_sphere(radius, slices, stacks).map_err(|e| to_py(e, None))?,
+        buoyancy_core::mesh::primitives::uv_sphere(radius, slices, stacks)
+            .map_err(|e| to_py(e, None))?,
     )
 }
 
@@ -78,7 +79,8 @@ pub fn torus(
     let sides = count_or(sides, "sides", 16)?;
     PyMesh::build(
         py,
-        buoyancy_core::shape::torus(major, minor, segments, sides).map_err(|e| to_py(e, None))?,
+        buoyancy_core::mesh::primitives::torus(major, minor, segments, sides)
+            .map_err(|e| to_py(e, None))?,
     )
 }
 
@@ -109,7 +111,7 @@ pub fn torus_knot(
     let sides = count_or(sides, "sides", 11)?;
     PyMesh::build(
         py,
-        buoyancy_core::shape::torus_knot(p, q, radius, tube_radius, segments, sides)
+        buoyancy_core::mesh::primitives::torus_knot(p, q, radius, tube_radius, segments, sides)
             .map_err(|e| to_py(e, None))?,
     )
 }
@@ -157,8 +159,10 @@ pub fn wigley_hull(
     let waterlines = count_or(waterlines, "waterlines", 17)?;
     PyMesh::build(
         py,
-        buoyancy_core::shape::wigley_hull(length, beam, draft, freeboard, stations, waterlines)
-            .map_err(|e| to_py(e, None))?,
+        buoyancy_core::mesh::primitives::wigley_hull(
+            length, beam, draft, freeboard, stations, waterlines,
+        )
+        .map_err(|e| to_py(e, None))?,
     )
 }
 
@@ -189,7 +193,7 @@ pub fn cuboid(py: Python<'_>, half_extents: &Bound<'_, PyAny>) -> PyResult<PyMes
     let half_extents = lengths3(half_extents, "half_extents")?;
     PyMesh::build(
         py,
-        buoyancy_core::shape::cuboid(half_extents).map_err(|e| to_py(e, None))?,
+        buoyancy_core::mesh::primitives::cuboid(half_extents).map_err(|e| to_py(e, None))?,
     )
 }
 
@@ -216,7 +220,8 @@ pub fn ellipsoid(
     let stacks = count_or(stacks, "stacks", 16)?;
     PyMesh::build(
         py,
-        buoyancy_core::shape::ellipsoid(radii, slices, stacks).map_err(|e| to_py(e, None))?,
+        buoyancy_core::mesh::primitives::ellipsoid(radii, slices, stacks)
+            .map_err(|e| to_py(e, None))?,
     )
 }
 
@@ -243,7 +248,7 @@ pub fn cylinder(
     let segments = count_or(segments, "segments", 32)?;
     PyMesh::build(
         py,
-        buoyancy_core::shape::cylinder(radius, half_height, segments)
+        buoyancy_core::mesh::primitives::cylinder(radius, half_height, segments)
             .map_err(|e| to_py(e, None))?,
     )
 }
@@ -275,7 +280,7 @@ pub fn capsule(
     let stacks = count_or(stacks, "stacks", 16)?;
     PyMesh::build(
         py,
-        buoyancy_core::shape::capsule(radius, half_height, segments, stacks)
+        buoyancy_core::mesh::primitives::capsule(radius, half_height, segments, stacks)
             .map_err(|e| to_py(e, None))?,
     )
 }

@@ -4,7 +4,7 @@
 use std::sync::Mutex;
 
 use buoyancy_core::nalgebra::Point3;
-use buoyancy_core::waves::WaterSurface;
+use buoyancy_core::water::WaterSurface;
 use buoyancy_core::{Error, Water};
 use pyo3::prelude::*;
 

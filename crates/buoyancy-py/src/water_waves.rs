@@ -2,7 +2,7 @@
 //! and the evaluations on them (buoyancy, elevations), whose failures name what failed.
 
 use buoyancy_core::nalgebra::Point3;
-use buoyancy_core::waves::{AiryComponent, AiryWaves, BREAKING_STEEPNESS, WaterSurface};
+use buoyancy_core::water::{AiryComponent, AiryWaves, BREAKING_STEEPNESS, WaterSurface};
 use buoyancy_core::{Buoyancy, Error, Mesh, Method, Pose, Traversal, Water};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;

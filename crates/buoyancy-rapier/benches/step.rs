@@ -12,8 +12,8 @@
 use std::sync::Arc;
 
 use buoyancy_core::nalgebra::{Point3, Vector3 as NVector3};
-use buoyancy_core::waves::{AiryComponent, AiryWaves};
-use buoyancy_core::{Mesh, shape};
+use buoyancy_core::water::{AiryComponent, AiryWaves};
+use buoyancy_core::{Mesh, mesh::primitives};
 use buoyancy_rapier::{FloatOptions, FloatingBodies};
 use criterion::{Criterion, criterion_group, criterion_main};
 use rapier3d::prelude::*;
@@ -29,7 +29,7 @@ fn bunny() -> (String, Mesh<f64>) {
             eprintln!("note: benchmarking the procedural torus knot instead of bunny.obj");
             (
                 "torus knot".to_string(),
-                shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16).unwrap(),
+                primitives::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16).unwrap(),
             )
         }
     };

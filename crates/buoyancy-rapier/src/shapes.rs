@@ -144,7 +144,7 @@ impl ShapeMeshes {
     ///
     /// Trimeshes are used as they are; cuboids and convex polyhedra exactly; balls, cylinders,
     /// capsules and cones with `subdivisions` segments around (and half as many from pole to
-    /// pole, even), their seams welded ([`buoyancy_core::shape::weld`]); compounds part by
+    /// pole, even), their seams welded ([`buoyancy_core::mesh::primitives::weld`]); compounds part by
     /// part. Nothing is appended on an error.
     pub fn append(
         &mut self,
@@ -207,7 +207,7 @@ impl ShapeMeshes {
             .collect();
         let mut triangles = triangles;
         if weld {
-            buoyancy_core::shape::weld(&points, &mut triangles);
+            buoyancy_core::mesh::primitives::weld(&points, &mut triangles);
         }
         let mesh = self.mesh(points, triangles).map_err(ShapeError::Mesh)?;
         self.entries.insert(key, (shared.clone(), mesh.clone()));

@@ -76,7 +76,7 @@ fn angular_damping_of_a_body_split_into_parts() {
 #[test]
 fn explicit_parts_float_instead_of_the_colliders() {
     use buoyancy_core::controller::Part;
-    use buoyancy_core::{Mesh, Pose, shape};
+    use buoyancy_core::{Mesh, Pose, mesh::primitives};
     use std::sync::Arc;
 
     let mut pool = Pool::new();
@@ -85,7 +85,7 @@ fn explicit_parts_float_instead_of_the_colliders() {
         RigidBodyBuilder::dynamic().can_sleep(false),
         ColliderBuilder::ball(0.5).mass(500.0),
     );
-    let (v, t) = shape::cube::<f64>(1).unwrap();
+    let (v, t) = primitives::cube::<f64>(1).unwrap();
     let part = Part {
         mesh: Arc::new(Mesh::new(v, t).unwrap()),
         shape_to_body: Pose::identity(),

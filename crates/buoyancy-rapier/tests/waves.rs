@@ -6,8 +6,8 @@ mod common;
 use std::sync::Arc;
 
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
-use buoyancy_core::waves::{AiryComponent, AiryWaves, CalmSurface, SeaState, Spectrum};
-use buoyancy_core::{Mesh, Method, Pose, Water, shape};
+use buoyancy_core::water::{AiryComponent, AiryWaves, CalmSurface, SeaState, Spectrum};
+use buoyancy_core::{Mesh, Method, Pose, Water, mesh::primitives};
 use buoyancy_rapier::{FloatOptions, FloatingBodies, Outcome};
 use common::{DT, Pool};
 use rapier3d::prelude::*;
@@ -94,7 +94,8 @@ fn a_small_light_buoy_follows_a_long_swell() {
 /// and the uniform density that floats it at its design draft (its mass ρ times the mesh's
 /// volume below y = 0).
 fn wigley_hull(stations: usize, waterlines: usize) -> (Mesh<f64>, f64) {
-    let (v, t) = shape::wigley_hull::<f64>(4.0, 0.6, 0.25, 0.15, stations, waterlines).unwrap();
+    let (v, t) =
+        primitives::wigley_hull::<f64>(4.0, 0.6, 0.25, 0.15, stations, waterlines).unwrap();
     let hull = Mesh::new(v, t).unwrap();
     let water = Water::default();
     let below = hull
@@ -270,7 +271,7 @@ type AddBody = fn(&mut Pool) -> RigidBodyHandle;
 
 /// The procedural torus knot 1.2 m across (576 triangles), centered on its centroid.
 fn coarse_knot() -> Mesh<f64> {
-    let (v, t) = shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 48, 6).unwrap();
+    let (v, t) = primitives::torus_knot::<f64>(2, 3, 1.0, 0.3, 48, 6).unwrap();
     let knot = Mesh::new(v, t).unwrap();
     let (center, scale) = (knot.centroid(), 0.6 / knot.bounding_radius());
     let v = (0..knot.vertex_count())

@@ -33,7 +33,7 @@ use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use buoyancy_bevy::{BuoyancyPlugin, FloatReport, Water};
 use buoyancy_core::nalgebra::Vector3;
-use buoyancy_core::waves::{AiryWaves, SeaState, Spectrum};
+use buoyancy_core::water::{AiryWaves, SeaState, Spectrum};
 use scene::{Body, BodyMass, HarborBody, Shape};
 
 /// The physics engine of the run.

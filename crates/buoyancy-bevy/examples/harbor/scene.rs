@@ -8,7 +8,7 @@ use bevy::prelude::*;
 use buoyancy_bevy::Floating;
 use buoyancy_core::hydrostatics::LoadingCondition;
 use buoyancy_core::nalgebra::Point3;
-use buoyancy_core::{Mesh, shape};
+use buoyancy_core::{Mesh, mesh::primitives};
 
 /// Segments around the buoy's cylinder (the plugin's default for round colliders).
 const SEGMENTS: u32 = 32;
@@ -87,7 +87,7 @@ pub struct HarborBody(pub usize);
 
 /// The mesh of a shape of the core.
 fn closed(
-    shape: Result<shape::Shape<f64>, buoyancy_core::Error>,
+    shape: Result<primitives::Shape<f64>, buoyancy_core::Error>,
 ) -> Result<Mesh<f64>, buoyancy_core::Error> {
     let (vertices, triangles) = shape?;
     Mesh::new(vertices, triangles)
@@ -176,7 +176,7 @@ pub fn harbor(density: f64, bunny_obj: Option<&str>) -> Result<Vec<Body>, buoyan
     {
         let height = 2.0 * f64::from(half.y);
         let draft = height * f64::from(crate_density) / density;
-        let mesh = closed(shape::cuboid([
+        let mesh = closed(primitives::cuboid([
             f64::from(half.x),
             f64::from(half.y),
             f64::from(half.z),
@@ -206,7 +206,7 @@ pub fn harbor(density: f64, bunny_obj: Option<&str>) -> Result<Vec<Body>, buoyan
     let n = f64::from(SEGMENTS);
     let polygon = n / 2.0 * radius * radius * (core::f64::consts::TAU / n).sin();
     let draft = mass / (density * polygon);
-    let mesh = closed(shape::cylinder(radius, half_height, SEGMENTS as usize))?;
+    let mesh = closed(primitives::cylinder(radius, half_height, SEGMENTS as usize))?;
     bodies.push(Body {
         name: "buoy",
         shape: Shape::Cylinder {
@@ -224,7 +224,7 @@ pub fn harbor(density: f64, bunny_obj: Option<&str>) -> Result<Vec<Body>, buoyan
     });
     // A Wigley hull 6 m long (along x), beam 0.8 m, design draft 0.4 m, freeboard 0.3 m, at
     // 85 % of its design displacement, its center of gravity 0.25 m above the keel.
-    let hull = closed(shape::wigley_hull(6.0, 0.8, 0.4, 0.3, 24, 8))?;
+    let hull = closed(primitives::wigley_hull(6.0, 0.8, 0.4, 0.3, 24, 8))?;
     let design = 4.0 * 6.0 * 0.8 * 0.4 / 9.0 * density;
     bodies.push(mesh_body(
         "Wigley hull",

@@ -8,7 +8,7 @@ use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use buoyancy_bevy::{FloatReport, Floating, Water};
 use buoyancy_core::nalgebra::Vector3;
-use buoyancy_core::waves::{AiryWaves, SeaState, Spectrum};
+use buoyancy_core::water::{AiryWaves, SeaState, Spectrum};
 
 /// The physics step of the tests, s: each `App::update` is one step.
 pub const DT: f32 = 1.0 / 60.0;

@@ -7,7 +7,7 @@ use super::last_evaluation::LastEvaluation;
 use super::report::FloatReport;
 use super::settings::{BodyOptions, DampingResolution};
 use super::share::AppliedShare;
-use crate::reduced_mesh::ReducedMesh;
+use crate::mesh::ReducedMesh;
 use crate::{Error, Mesh, Pose};
 
 /// One closed mesh of a body, placed on it: a shape's mesh in the shape's frame, and the pose

@@ -10,7 +10,7 @@ use super::settings::Settings;
 use super::state::{BodyState, Motion};
 use super::wrench::Wrench;
 use crate::damping::{add_block, angular_damping, angular_damping_stiffness};
-use crate::waves::WaterSurface;
+use crate::water::WaterSurface;
 
 /// A moving free surface at the time of a step.
 #[derive(Clone, Copy)]
@@ -258,17 +258,17 @@ mod tests {
     use crate::controller::body::Part;
     use crate::controller::settings::BodyOptions;
     use crate::controller::state::Motion;
-    use crate::reduced_mesh::ReducedMesh;
-    use crate::{DampingCoefficients, Mesh, Pose, shape};
+    use crate::mesh::ReducedMesh;
+    use crate::{DampingCoefficients, Mesh, Pose, mesh::primitives};
 
     /// The stiffness of a body of two parts (a cube and a sphere's reduced copy, off its center
     /// of mass, half under water) against central differences of the damping its parts sum,
     /// velocity taken at the center of mass.
     #[test]
     fn a_bodys_stiffness_is_the_derivative_of_its_damping() {
-        let (v, t) = shape::cube::<f64>(3).unwrap();
+        let (v, t) = primitives::cube::<f64>(3).unwrap();
         let cube = Arc::new(Mesh::new(v, t).unwrap());
-        let (v, t) = shape::uv_sphere::<f64>(0.5, 32, 16).unwrap();
+        let (v, t) = primitives::uv_sphere::<f64>(0.5, 32, 16).unwrap();
         let sphere = Arc::new(Mesh::new(v, t).unwrap());
         let reduced = ReducedMesh::new(&sphere, 150).map(Arc::new);
         assert!(reduced.is_some());

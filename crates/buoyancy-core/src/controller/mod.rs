@@ -116,11 +116,11 @@
 //! ```
 //! use buoyancy_core::controller::{BodyOptions, BodyState, Command, Controller, Motion, Part};
 //! use buoyancy_core::nalgebra::{Matrix3, Point3, Vector3};
-//! use buoyancy_core::{shape, Mesh, Pose};
+//! use buoyancy_core::{mesh::primitives, Mesh, Pose};
 //! use std::sync::Arc;
 //!
 //! // A 1 m cube of 500 kg, its center at the water level (half under water), at rest.
-//! let (v, t) = shape::cube::<f64>(1)?;
+//! let (v, t) = primitives::cube::<f64>(1)?;
 //! let part = Part { mesh: Arc::new(Mesh::new(v, t)?), shape_to_body: Pose::identity() };
 //! let mut controller = Controller::default();
 //! let cube = controller.add(vec![part], BodyOptions::default())?;
@@ -171,8 +171,8 @@ use evaluation::{Evaluation, Sea, evaluate};
 use last_evaluation::LastEvaluation;
 
 use crate::Error;
-use crate::reduced_mesh::ReducedMesh;
-use crate::waves::WaterSurface;
+use crate::mesh::ReducedMesh;
+use crate::water::WaterSurface;
 
 /// A free surface shared with the controller (see [`Controller::set_surface`]): any
 /// [`WaterSurface`], e.g. `Arc::new(airy_waves)`.
@@ -507,8 +507,8 @@ impl Controller {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::waves::{AiryComponent, AiryWaves, CalmSurface};
-    use crate::{Mesh, Pose, Water, shape};
+    use crate::water::{AiryComponent, AiryWaves, CalmSurface};
+    use crate::{Mesh, Pose, Water, mesh::primitives};
     use nalgebra::{Matrix3, Point3, Translation3, UnitQuaternion, Vector3};
 
     /// A body held by the engine in the same state (asleep, still) for steps on end, while the
@@ -517,7 +517,7 @@ mod tests {
     /// the steps whose inputs repeat the last ones' take its evaluation again.
     #[test]
     fn the_same_inputs_take_the_last_evaluation_again() {
-        let (v, t) = shape::uv_sphere::<f64>(0.5, 40, 20).unwrap();
+        let (v, t) = primitives::uv_sphere::<f64>(0.5, 40, 20).unwrap();
         let sphere = Arc::new(Mesh::new(v, t).unwrap());
         let mut controller = Controller::default();
         let part = Part {

@@ -110,7 +110,7 @@ mod tests {
 
     use super::*;
     use crate::controller::{BodyOptions, Command, Motion};
-    use crate::shape;
+    use crate::mesh::primitives;
 
     fn state(pose: Pose<f64>, center_of_mass: Point3<f64>, mass: f64) -> BodyState {
         BodyState {
@@ -130,7 +130,7 @@ mod tests {
     }
 
     fn block() -> Arc<Mesh<f64>> {
-        let (v, t) = shape::cube::<f64>(2).unwrap();
+        let (v, t) = primitives::cube::<f64>(2).unwrap();
         Arc::new(
             Mesh::new(v, t)
                 .unwrap()

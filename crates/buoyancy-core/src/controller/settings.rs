@@ -7,7 +7,7 @@ use crate::{DampingCoefficients, Method, Water};
 /// [damping](crate::damping) model; the buoyancy always takes the full mesh).
 ///
 /// The default, [`DampingResolution::DEFAULT`], integrates it over a coarse copy of each mesh
-/// of more than 384 triangles ([`ReducedMesh`](crate::reduced_mesh::ReducedMesh), built once per
+/// of more than 384 triangles ([`ReducedMesh`](crate::mesh::ReducedMesh), built once per
 /// mesh when a body is added, shared by the bodies with the same mesh), and exactly over the
 /// smaller ones (a box, a cylinder or cone of up to 96 segments are unchanged). The bunny of
 /// 5,002 triangles becomes 362: half under water and moving, its pressure drag costs about a
@@ -19,7 +19,7 @@ pub enum DampingResolution {
     /// model exactly.
     Full,
     /// Over a copy of at most `max_triangles` triangles (at least
-    /// [`MIN_REDUCED_TRIANGLES`](crate::reduced_mesh::MIN_REDUCED_TRIANGLES)) of each mesh of
+    /// [`MIN_REDUCED_TRIANGLES`](crate::mesh::MIN_REDUCED_TRIANGLES)) of each mesh of
     /// more ([`Mesh::reduced_damping`](crate::Mesh::reduced_damping)); a mesh that has no
     /// more, or that no reduction keeps within 10 % of its area and volume, is taken whole.
     Reduced {

@@ -167,8 +167,8 @@ pub(crate) fn add_block<T: Real>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reduced_mesh::ReducedMesh;
-    use crate::{Damping, Mesh, Pose, Water, shape};
+    use crate::mesh::ReducedMesh;
+    use crate::{Damping, Mesh, Pose, Water, mesh::primitives};
     use nalgebra::{Translation3, UnitQuaternion, Vector6};
 
     /// The damping wrench about `q` for the velocity `q̇` taken at `q`.
@@ -203,13 +203,13 @@ mod tests {
     /// half submerged and tilted, about the centroid and about another point.
     #[test]
     fn stiffness_is_the_derivative_of_the_wrench() {
-        let mesh = |s: Result<shape::Shape<f64>, crate::Error>| {
+        let mesh = |s: Result<primitives::Shape<f64>, crate::Error>| {
             let (v, t) = s.unwrap();
             Mesh::new(v, t).unwrap()
         };
-        let torus = mesh(shape::torus(1.0, 0.4, 48, 24));
-        let sphere = mesh(shape::uv_sphere(0.8, 48, 24));
-        let cube = mesh(shape::cube(3));
+        let torus = mesh(primitives::torus(1.0, 0.4, 48, 24));
+        let sphere = mesh(primitives::uv_sphere(0.8, 48, 24));
+        let cube = mesh(primitives::cube(3));
         let reduced = ReducedMesh::new(&sphere, 200).unwrap();
         let coefficients = DampingCoefficients::default()
             .with_angular_drag(0.3, 0.2)

@@ -6,7 +6,7 @@ use nalgebra::{Matrix2, Matrix3, Point3, Translation3, Unit, UnitQuaternion, Vec
 
 use super::waterplane::in_plane;
 use super::{Hydrostatics, LoadingCondition};
-use crate::frame::Frame;
+use crate::query::frame::Frame;
 use crate::{Buoyancy, Error, Mesh, Method, Pose, Real, Water};
 
 /// Settings of [`Mesh::equilibrium_with`] and [`Mesh::gz_curve`].

@@ -2,7 +2,7 @@
 
 use nalgebra::Vector3;
 
-use crate::frame::Frame;
+use crate::query::frame::Frame;
 use crate::{Mesh, Real};
 
 impl<T: Real> Mesh<T> {
@@ -66,12 +66,12 @@ impl<T: Real> Mesh<T> {
 mod tests {
     use nalgebra::{Translation3, UnitQuaternion, Vector3};
 
-    use crate::frame::Frame;
-    use crate::{Mesh, Pose, Water, shape};
+    use crate::query::frame::Frame;
+    use crate::{Mesh, Pose, Water, mesh::primitives};
 
     #[test]
     fn lowest_vertex_matches_a_scan() {
-        let (v, t) = shape::torus::<f64>(1.0, 0.3, 48, 24).unwrap();
+        let (v, t) = primitives::torus::<f64>(1.0, 0.3, 48, 24).unwrap();
         let mesh = Mesh::new(v, t).unwrap();
         let water = Water::default();
         for k in 0..50 {

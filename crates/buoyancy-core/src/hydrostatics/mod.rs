@@ -82,12 +82,12 @@
 //! # Example
 //! ```
 //! use buoyancy_core::hydrostatics::LoadingCondition;
-//! use buoyancy_core::{Mesh, Pose, Water, shape};
+//! use buoyancy_core::{Mesh, Pose, Water, mesh::primitives};
 //! use nalgebra::{Point3, Vector3};
 //!
 //! // A box 4 m long (x), 1 m deep (y, up), 2 m wide (z), its center at the surface: draft
 //! // T = 0.5 m; its center of gravity at its center.
-//! let (v, t) = shape::cube::<f64>(1)?;
+//! let (v, t) = primitives::cube::<f64>(1)?;
 //! let hull = Mesh::new(v, t)?.scaled(&Vector3::new(4.0, 1.0, 2.0))?;
 //! let water = Water::default();
 //! let loading = LoadingCondition::new(Point3::origin())?;
@@ -126,11 +126,11 @@
 //!
 //! ```
 //! use buoyancy_core::hydrostatics::TableOptions;
-//! use buoyancy_core::{Mesh, Water, shape};
+//! use buoyancy_core::{Mesh, Water, mesh::primitives};
 //! use nalgebra::Vector3;
 //!
 //! // A box 4 m long (x), 1 m deep (y, up), 2 m wide (z).
-//! let (v, t) = shape::cube::<f64>(1)?;
+//! let (v, t) = primitives::cube::<f64>(1)?;
 //! let hull = Mesh::new(v, t)?.scaled(&Vector3::new(4.0, 1.0, 2.0))?;
 //! let water = Water::default();
 //! let rows = hull.hydrostatic_table(&water, &[0.25, 0.5, 0.75], &TableOptions::new())?;
@@ -152,7 +152,7 @@
 //! # Open hulls
 //! A hull surface without a deck is closed by flat lids when the mesh is built,
 //! [`Mesh::close_openings`](crate::Mesh::close_openings): each planar loop of open edges gets a
-//! fan of triangles, the mesh remembers them ([`Opening`]), and
+//! fan of triangles, the mesh remembers them ([`Opening`](crate::mesh::Opening)), and
 //! [`Mesh::check_openings`](crate::Mesh::check_openings), the waterplane and the hydrostatic
 //! table return [`Error::OpeningSubmerged`](crate::Error::OpeningSubmerged) the moment the water
 //! reaches a rim. While the rims are dry, every result is that of the open hull.
@@ -234,12 +234,12 @@
 //!
 //! ```
 //! use buoyancy_core::hydrostatics::{EquilibriumOptions, LoadingCondition, Trim};
-//! use buoyancy_core::{Mesh, Water, shape};
+//! use buoyancy_core::{Mesh, Water, mesh::primitives};
 //! use nalgebra::{Point3, Vector3};
 //!
 //! // A box 4 m long (x), 1 m deep (y, up), 2 m wide (z) of 4000 kg: draft 0.5 m in fresh
 //! // water; G 0.25 m above the keel and 2 cm towards +z.
-//! let (v, t) = shape::cube::<f64>(2)?;
+//! let (v, t) = primitives::cube::<f64>(2)?;
 //! let hull = Mesh::new(v, t)?.scaled(&Vector3::new(4.0, 1.0, 2.0))?;
 //! let water = Water::default();
 //! let loading = LoadingCondition::new(Point3::new(0.0, -0.25, 0.02))?.with_mass(4000.0)?;
@@ -266,7 +266,6 @@
 
 mod equilibrium;
 mod keel;
-mod openings;
 mod righting_arm;
 mod stability;
 mod table;
@@ -274,7 +273,6 @@ mod units;
 mod waterplane;
 
 pub use equilibrium::{Equilibrium, EquilibriumOptions};
-pub use openings::Opening;
 pub use righting_arm::{GzCurve, GzPoint, PositiveStability, Trim};
 pub use stability::{Hydrostatics, LoadingCondition};
 pub use table::{HydrostaticRow, TableOptions};

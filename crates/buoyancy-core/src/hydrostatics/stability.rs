@@ -3,7 +3,7 @@
 use nalgebra::{Matrix3, Point3, Vector3};
 
 use super::waterplane::{Waterplane, in_plane};
-use crate::frame::Frame;
+use crate::query::frame::Frame;
 use crate::{Error, Mesh, Method, Pose, Real, Water};
 
 /// What the hydrostatic quantities need to know of the body beyond its hull: its center of

@@ -7,7 +7,7 @@ use nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
 
 use super::stability::{Hydrostatics, LoadingCondition};
 use super::waterplane::in_plane;
-use crate::frame::Frame;
+use crate::query::frame::Frame;
 use crate::{Error, Mesh, Pose, Real, Water};
 
 /// How [`Mesh::hydrostatic_table`] places the body and what it measures from. Points and axes

@@ -100,12 +100,12 @@ pub fn units_warnings<T: Real>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shape;
+    use crate::mesh::primitives;
     use alloc::string::ToString;
     use nalgebra::Vector3;
 
     fn block(scale: f64) -> Mesh<f64> {
-        let (v, t) = shape::cube(1).unwrap();
+        let (v, t) = primitives::cube(1).unwrap();
         Mesh::new(v, t)
             .unwrap()
             .scaled(&Vector3::new(4.0, 2.0, 1.0).scale(scale))

@@ -2,9 +2,9 @@
 
 use nalgebra::{Matrix2, Point3, Unit, Vector2, Vector3};
 
-use crate::clip::{TriangleClass, classify, cut_at_waterline};
-use crate::frame::Frame;
-use crate::hierarchy::Visit;
+use crate::mesh::hierarchy::Visit;
+use crate::query::clip::{TriangleClass, classify, cut_at_waterline};
+use crate::query::frame::Frame;
 use crate::{Error, Mesh, Pose, Real, Water};
 
 /// The waterplane of a body at a pose: the part of the still-water plane inside the mesh (the
@@ -118,10 +118,10 @@ impl<T: Real> Mesh<T> {
     /// allocation.
     ///
     /// ```
-    /// use buoyancy_core::{Mesh, Pose, Water, shape};
+    /// use buoyancy_core::{Mesh, Pose, Water, mesh::primitives};
     ///
     /// // A unit cube centered at the surface: a unit square, F at the origin, I = 1/12.
-    /// let (v, t) = shape::cube::<f64>(2)?;
+    /// let (v, t) = primitives::cube::<f64>(2)?;
     /// let wp = Mesh::new(v, t)?.waterplane(&Pose::identity(), &Water::default())?;
     /// assert!((wp.area - 1.0).abs() < 1e-14);
     /// assert!(wp.center_of_flotation.coords.norm() < 1e-14);

@@ -6,7 +6,7 @@ use alloc::vec::Vec;
 use nalgebra::Point3;
 
 use super::parse_error;
-use crate::shape::Shape;
+use crate::mesh::primitives::Shape;
 use crate::{Error, Real};
 
 /// Parses Wavefront OBJ text: `v x y z` and `f` lines (`f 1 2 3`, `f 1/1/1 2/2/2 3/3/3`,

@@ -12,7 +12,7 @@ use ply_rs_bw::ply::{
 };
 
 use super::parse_error;
-use crate::shape::Shape;
+use crate::mesh::primitives::Shape;
 use crate::{Error, Real};
 
 /// The names of a face's list of vertex indices.
@@ -328,7 +328,7 @@ impl PropertyAccess for Skipped {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Mesh, shape};
+    use crate::{Mesh, mesh::primitives};
     use alloc::vec;
     use std::path::PathBuf;
 
@@ -343,7 +343,7 @@ mod tests {
     /// A PLY file of a unit cube made of six quads, with `double` coordinates, a colour per
     /// vertex, a `uint` index list and a trailing `edge` element, all to be read or read past.
     fn cube_ply(storage: Storage) -> Vec<u8> {
-        let (v, t) = shape::cube::<f64>(1).unwrap();
+        let (v, t) = primitives::cube::<f64>(1).unwrap();
         // The cube's triangles come in pairs sharing a diagonal: [a, b, c], [a, c, d].
         let quads: Vec<[u32; 4]> = t
             .chunks_exact(2)
@@ -428,7 +428,7 @@ mod tests {
     #[test]
     fn ascii_and_binary_files_load_alike() {
         let dir = TempDir::new("ply-storage");
-        let (v, t) = shape::cube::<f64>(1).unwrap();
+        let (v, t) = primitives::cube::<f64>(1).unwrap();
         for (storage, file) in [
             (Storage::Ascii, "cube.ply"),
             (Storage::Little, "cube-le.PLY"),

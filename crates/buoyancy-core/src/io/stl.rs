@@ -7,7 +7,7 @@ use alloc::vec::Vec;
 use nalgebra::Point3;
 
 use super::parse_error;
-use crate::shape::Shape;
+use crate::mesh::primitives::Shape;
 use crate::{Error, Real};
 
 /// Parses an STL file, binary or ASCII, and welds vertices with identical coordinates (STL
@@ -106,7 +106,7 @@ impl Welder {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Mesh, shape};
+    use crate::{Mesh, mesh::primitives};
     use alloc::string::String;
     use alloc::vec;
 
@@ -127,7 +127,7 @@ mod tests {
 
     #[test]
     fn stl_binary_and_ascii_round_trip() {
-        let (v, t) = shape::cube::<f64>(2).unwrap();
+        let (v, t) = primitives::cube::<f64>(2).unwrap();
         let (bv, bt) = parse_stl::<f64>(&binary_stl(&v, &t)).unwrap();
         assert_eq!((bv.len(), bt.len()), (v.len(), t.len()));
         assert!((Mesh::new(bv, bt).unwrap().volume() - 1.0).abs() < 1e-12);

@@ -27,21 +27,21 @@ pub fn shared_meshes() -> &'static [(String, Mesh<f64>)] {
 pub fn procedural_meshes() -> &'static [(String, Mesh<f64>)] {
     static MESHES: OnceLock<Vec<(String, Mesh<f64>)>> = OnceLock::new();
     MESHES.get_or_init(|| {
-        use buoyancy_core::shape;
-        let build = |(v, t): shape::Shape<f64>| Mesh::new(v, t).unwrap();
+        use buoyancy_core::mesh::primitives;
+        let build = |(v, t): primitives::Shape<f64>| Mesh::new(v, t).unwrap();
         vec![
-            ("cube".into(), build(shape::cube(3).unwrap())),
+            ("cube".into(), build(primitives::cube(3).unwrap())),
             (
                 "sphere".into(),
-                build(shape::uv_sphere(1.0, 24, 16).unwrap()),
+                build(primitives::uv_sphere(1.0, 24, 16).unwrap()),
             ),
             (
                 "torus".into(),
-                build(shape::torus(1.0, 0.4, 32, 16).unwrap()),
+                build(primitives::torus(1.0, 0.4, 32, 16).unwrap()),
             ),
             (
                 "torus knot".into(),
-                build(shape::torus_knot(2, 3, 1.0, 0.25, 80, 11).unwrap()),
+                build(primitives::torus_knot(2, 3, 1.0, 0.25, 80, 11).unwrap()),
             ),
         ]
     })

@@ -1,7 +1,7 @@
 //! Shared helpers of the adapter's tests: a small world, settling, and the equilibrium checks.
 #![allow(dead_code)]
 
-use buoyancy_core::{Mesh, shape};
+use buoyancy_core::{Mesh, mesh::primitives};
 use buoyancy_rapier::{FloatOptions, FloatingBodies};
 use rapier3d::prelude::*;
 
@@ -138,7 +138,7 @@ pub fn model(file: &str, radius: f64) -> (String, Mesh<f64>) {
             eprintln!("note: using the procedural torus knot instead of {file}");
             (
                 "procedural torus knot".to_string(),
-                shape::torus_knot::<f64>(2, 3, 1.0, 0.3, 128, 12).unwrap(),
+                primitives::torus_knot::<f64>(2, 3, 1.0, 0.3, 128, 12).unwrap(),
             )
         }
     };

@@ -22,7 +22,7 @@ use crate::{Error, Real, Water};
 /// crests become cusps and beyond they fold over, which [`GerstnerWaves::new`] rejects.
 ///
 /// ```
-/// use buoyancy_core::waves::{AiryComponent, GerstnerWaves, WaterSurface};
+/// use buoyancy_core::water::{AiryComponent, GerstnerWaves, WaterSurface};
 /// use buoyancy_core::Water;
 /// use nalgebra::{Point3, Vector3};
 ///

@@ -3,7 +3,7 @@
 //! Every evaluation sums per-triangle terms. To give the same bits whatever the number of
 //! threads, the work is cut in pieces fixed by the input, never by the threads: the scan in
 //! chunks of [`CHUNK`] triangles combined in a fixed pairwise tree ([`reduce`]), the hierarchy in
-//! its own subtrees (see [`Hierarchy::reduce`](crate::hierarchy::Hierarchy::reduce)). [`join`]
+//! its own subtrees (see [`Hierarchy::reduce`](crate::mesh::hierarchy::Hierarchy::reduce)). [`join`]
 //! runs the two halves of a piece on rayon's pool with the `rayon` feature, one after the other
 //! without it; the order of the merges is the same either way.
 

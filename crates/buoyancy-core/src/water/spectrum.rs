@@ -98,7 +98,7 @@ impl<T: Real> AiryWaves<T> {
     /// scaling also stands for JONSWAP's normalising factor).
     ///
     /// ```
-    /// use buoyancy_core::waves::{AiryWaves, SeaState, Spectrum};
+    /// use buoyancy_core::water::{AiryWaves, SeaState, Spectrum};
     /// use buoyancy_core::Water;
     /// use nalgebra::Vector3;
     ///

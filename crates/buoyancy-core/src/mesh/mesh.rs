@@ -2,12 +2,12 @@ use alloc::vec::Vec;
 
 use nalgebra::{Matrix4, Point3, Vector3};
 
-use crate::hierarchy::Hierarchy;
-use crate::hydrostatics::Opening;
-use crate::node_sums::{NodeSums, TriangleTerms};
-use crate::surface_moments::SurfaceMoments;
-use crate::validation;
-use crate::vertex_terms::VertexTerms;
+use crate::mesh::Opening;
+use crate::mesh::hierarchy::Hierarchy;
+use crate::mesh::node_sums::{NodeSums, TriangleTerms};
+use crate::mesh::validation;
+use crate::query::surface_integral::moments::SurfaceMoments;
+use crate::query::waves::vertex_terms::VertexTerms;
 use crate::{Error, Real};
 
 /// The memory [`Mesh::new`] holds at its peak per triangle, bytes, rounded up: 337–341 measured
@@ -205,10 +205,10 @@ impl<T: Real> Mesh<T> {
     /// triangles facing outward; the result is validated and prepared like any new mesh.
     ///
     /// ```
-    /// use buoyancy_core::{Mesh, shape};
+    /// use buoyancy_core::{Mesh, mesh::primitives};
     /// use nalgebra::{Matrix4, Vector3};
     ///
-    /// let (v, t) = shape::cube::<f64>(1)?;
+    /// let (v, t) = primitives::cube::<f64>(1)?;
     /// let cube = Mesh::new(v, t)?;
     /// let slab = cube.scaled(&Vector3::new(2.0, 0.5, 1.0))?;
     /// assert!((slab.volume() - 1.0).abs() < 1e-12);
@@ -314,7 +314,7 @@ impl<T: Real> Mesh<T> {
 
     /// The longest edge of the triangles, m: under waves sampled at the vertices, a wave shorter
     /// than twice this is not seen between them (see
-    /// [`AiryWaves::shortest_wavelength`](crate::waves::AiryWaves::shortest_wavelength)).
+    /// [`AiryWaves::shortest_wavelength`](crate::water::AiryWaves::shortest_wavelength)).
     pub fn longest_edge(&self) -> T {
         self.longest_edge
     }

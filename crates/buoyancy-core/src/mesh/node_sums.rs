@@ -22,8 +22,8 @@ use alloc::vec::Vec;
 use nalgebra::Vector3;
 
 use crate::Real;
-use crate::hierarchy::Hierarchy;
-use crate::surface_moments::SurfaceMoments;
+use crate::mesh::hierarchy::Hierarchy;
+use crate::query::surface_integral::moments::SurfaceMoments;
 
 /// One triangle's terms, `f64`, mesh frame, about the centroid: what a node sums.
 pub(crate) struct TriangleTerms {

@@ -27,7 +27,7 @@ use alloc::vec::Vec;
 use nalgebra::Vector3;
 
 use crate::Real;
-use crate::reduction::{Sums, join};
+use crate::query::reduction::{Sums, join};
 
 /// Most triangles in a leaf: a node with more triangles is an inner node.
 const LEAF_SIZE: u32 = 8;

@@ -6,14 +6,16 @@
 //! under water add their stored coefficients (see `surface_moments`), and the cost follows the
 //! waterline.
 
+pub(crate) mod moments;
+
 use nalgebra::Vector3;
 
-use crate::buoyancy::TriangleCounts;
-use crate::clip::{TriangleClass, WaterlineCut, classify, cut_at_waterline};
-use crate::frame::Frame;
-use crate::hierarchy::Visit;
-use crate::reduction::{Sums, reduce};
-use crate::surface_moments::SurfaceMoments;
+use crate::mesh::hierarchy::Visit;
+use crate::query::clip::{TriangleClass, WaterlineCut, classify, cut_at_waterline};
+use crate::query::frame::Frame;
+use crate::query::reduction::{Sums, reduce};
+use crate::query::result::TriangleCounts;
+use crate::query::surface_integral::moments::SurfaceMoments;
 use crate::{Buoyancy, Mesh, Method, Real, Water};
 
 /// Running sums of the surface methods, moments about a reference point `o`.
@@ -174,11 +176,11 @@ impl<T: Real> Mesh<T> {
 
     /// The surface sums over the hierarchy: the triangles of the leaves the surface crosses go
     /// through `triangle`; the inner nodes entirely under water add their stored coefficients,
-    /// evaluated once at the end (see [`crate::surface_moments`]), with their area; the leaves
+    /// evaluated once at the end (see [`crate::query::surface_integral::moments`]), with their area; the leaves
     /// entirely under water, which store no coefficients, integrate their few triangles whole
     /// (every vertex lies below the surface by more than its round-off: each triangle is
     /// submerged, as `triangle` would find) and add their stored area. In parallel as
-    /// [`Hierarchy::reduce`](crate::hierarchy::Hierarchy::reduce) says.
+    /// [`Hierarchy::reduce`](crate::mesh::hierarchy::Hierarchy::reduce) says.
     fn surface_walk(
         &self,
         frame: &Frame<T>,

@@ -12,8 +12,8 @@
 
 use nalgebra::{Point3, Vector3};
 
-use crate::buoyancy::TriangleCounts;
-use crate::frame::Frame;
+use crate::query::frame::Frame;
+use crate::query::result::TriangleCounts;
 use crate::{Buoyancy, Error, Mesh, Method, Pose, Real, Traversal, Water};
 
 impl<T: Real> Mesh<T> {
@@ -151,7 +151,7 @@ impl<T: Real> Mesh<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shape;
+    use crate::mesh::primitives;
     use nalgebra::{Translation3, UnitQuaternion, Vector3};
 
     fn at(x: f64, y: f64, z: f64) -> Pose<f64> {
@@ -160,7 +160,7 @@ mod tests {
 
     #[test]
     fn half_submerged_cube_all_methods() {
-        let (v, t) = shape::cube::<f64>(4).unwrap();
+        let (v, t) = primitives::cube::<f64>(4).unwrap();
         let cube = Mesh::new(v, t).unwrap();
         let water = Water::default();
         for method in Method::ALL {
@@ -177,7 +177,7 @@ mod tests {
 
     #[test]
     fn dry_body_has_no_force_and_a_finite_center() {
-        let (v, t) = shape::cube::<f64>(2).unwrap();
+        let (v, t) = primitives::cube::<f64>(2).unwrap();
         let cube = Mesh::new(v, t).unwrap();
         for method in Method::ALL {
             let b = cube
@@ -193,7 +193,7 @@ mod tests {
 
     #[test]
     fn invalid_poses_are_errors() {
-        let (v, t) = shape::cube::<f64>(1).unwrap();
+        let (v, t) = primitives::cube::<f64>(1).unwrap();
         let cube = Mesh::new(v, t).unwrap();
         let w = Water::default();
         let e = cube

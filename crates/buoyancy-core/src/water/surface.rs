@@ -1,48 +1,20 @@
-//! Water surfaces that move: the elevation `η` of the free surface above the still plane of a
-//! [`Water`], as a function of horizontal position and time.
-//!
-//! # Frames
-//! A [`Water`] defines the still plane `n·p = level` of the world frame. A
-//! *horizontal position* is a world point projected onto that plane, `p − (n·p − level)·n`, so
-//! any up normal works. The free surface is `{ q + η(q, t)·n : q on the still plane }`, and a
-//! world point `x` lies `h = n·x − level − η(q, t)` above it, `q` its projection. Units: m, s.
-//!
-//! # Surfaces
-//! * [`CalmSurface`]: `η = 0`, the still water of [`Mesh::buoyancy`].
-//! * [`AiryWaves`]: a sum of linear (Airy) wave components, finite or infinite depth, given
-//!   one by one or drawn from a [`SeaState`] (Pierson–Moskowitz or JONSWAP spectrum).
-//! * [`GerstnerWaves`]: trochoidal waves, the elevation at a point solved from the particle
-//!   there.
-//! * [`HeightGrid`]: heights on a regular grid, bilinear, optionally periodic, replaceable each
-//!   step without reallocating (oceans computed elsewhere).
-//! * [`SurfaceFn`]: any function or closure of the horizontal position and time.
-//!
-//! Every surface is evaluated in batches, once per vertex per evaluation
-//! ([`WaterSurface::elevations`]); [`Mesh::buoyancy_in_waves`]
-//! integrates the pressure over the wetted surface (see `wave_pressure`).
-
-mod airy;
-mod cosine;
-mod gerstner;
-mod grid;
-mod spectrum;
+//! The free surface: the [`WaterSurface`] trait every surface implements, the calm surface and a
+//! surface given by a function; the dispersion relation and the resolution of wave components
+//! for a water, which the linear surfaces share.
 
 use alloc::vec::Vec;
 
 use nalgebra::{Point3, Vector3};
 
-pub(crate) use airy::pressure_ratio;
-pub use airy::{AiryComponent, AiryWaves, BREAKING_STEEPNESS, WaterMotion};
-pub use gerstner::GerstnerWaves;
-pub use grid::HeightGrid;
-pub use spectrum::{SeaState, Spectrum};
-
+use super::AiryComponent;
+#[cfg(doc)]
+use super::{AiryWaves, HeightGrid};
 #[cfg(doc)]
 use crate::Mesh;
 use crate::{Error, Real, Water};
 
 /// A free surface: the elevation `η` (m) above the still plane of a [`Water`] at horizontal
-/// positions and a time (see the [module documentation](self)).
+/// positions and a time (see the [module documentation](crate::water)).
 pub trait WaterSurface<T: Real>: Sync {
     /// Writes `η(points[i], time)` into `elevations[i]`, for horizontal positions `points`
     /// (world frame, on the still plane of `water`) at `time` (s). `elevations` has the length
@@ -122,7 +94,7 @@ impl<T: Real> WaterSurface<T> for CalmSurface {
 /// still plane) and the time `t`, called once per point.
 ///
 /// ```
-/// use buoyancy_core::waves::{SurfaceFn, WaterSurface};
+/// use buoyancy_core::water::{SurfaceFn, WaterSurface};
 /// use buoyancy_core::Water;
 /// use nalgebra::Point3;
 ///

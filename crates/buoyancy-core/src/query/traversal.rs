@@ -53,7 +53,7 @@ impl core::str::FromStr for Traversal {
     fn from_str(s: &str) -> Result<Self, Error> {
         Traversal::ALL
             .into_iter()
-            .find(|t| crate::method::names_match(t.name(), s))
+            .find(|t| crate::query::method::names_match(t.name(), s))
             .ok_or_else(|| Error::UnknownTraversal { name: s.into() })
     }
 }

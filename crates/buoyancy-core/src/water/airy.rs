@@ -35,7 +35,7 @@ impl<T: Real> AiryComponent<T> {
 /// component follows the dispersion relation `ω² = g·k·tanh(k·h)` (`ω² = g·k` in deep water).
 ///
 /// ```
-/// use buoyancy_core::waves::{AiryComponent, AiryWaves, WaterSurface};
+/// use buoyancy_core::water::{AiryComponent, AiryWaves, WaterSurface};
 /// use buoyancy_core::Water;
 /// use nalgebra::{Point3, Vector3};
 ///
@@ -189,7 +189,7 @@ impl<T: Real> AiryWaves<T> {
     /// stretching); below the bottom, those at the bottom.
     ///
     /// ```
-    /// use buoyancy_core::waves::{AiryComponent, AiryWaves};
+    /// use buoyancy_core::water::{AiryComponent, AiryWaves};
     /// use buoyancy_core::Water;
     /// use nalgebra::{Point3, Vector3};
     ///

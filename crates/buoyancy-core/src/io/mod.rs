@@ -22,7 +22,8 @@ pub use ply::parse_ply;
 pub use stl::parse_stl;
 
 #[cfg(feature = "std")]
-use crate::{Real, shape::Shape};
+use crate::Real;
+use crate::mesh::primitives::Shape;
 
 /// The memory [`load`] may hold while it reads and parses a file, per byte of the file: the
 /// bytes, and the vertices and triangles parsed from them (a binary STL's 50 bytes a triangle

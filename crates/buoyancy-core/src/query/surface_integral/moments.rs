@@ -30,7 +30,7 @@
 use nalgebra::{Matrix3, Vector3};
 
 use crate::Real;
-use crate::surface::SurfaceSums;
+use crate::query::surface_integral::SurfaceSums;
 
 /// The pair `(j, l)` of each stored slice of `T`, in storage order.
 const PAIRS: [(usize, usize); 6] = [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)];
@@ -146,7 +146,7 @@ impl SurfaceMoments<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reduction::Sums;
+    use crate::query::reduction::Sums;
     use alloc::vec::Vec;
 
     fn triangles() -> Vec<[Vector3<f64>; 3]> {

@@ -3,7 +3,7 @@
 //!
 //! Over a triangle `t` with corners `rᵢ` (relative to the centroid, mesh frame), outward area
 //! vector `A_t`, `R_t = Σ rᵢ` and heights `hᵢ` above the free surface, the surface sums of
-//! [`SurfaceSums::add_triangle`](crate::surface::SurfaceSums::add_triangle) are
+//! [`SurfaceSums::add_triangle`](crate::query::surface_integral::SurfaceSums::add_triangle) are
 //!
 //! ```text
 //! force6   = Σᵢ hᵢ · 2A_t
@@ -119,8 +119,8 @@ impl<T: Real> LinearSums<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reduction::Sums;
-    use crate::surface::SurfaceSums;
+    use crate::query::reduction::Sums;
+    use crate::query::surface_integral::SurfaceSums;
     use alloc::vec;
 
     #[test]

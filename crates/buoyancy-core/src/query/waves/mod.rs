@@ -1,84 +1,44 @@
-//! Buoyancy under a moving, non-planar free surface: the hydrostatic pressure of the waves
-//! integrated exactly over the wetted surface.
-//!
-//! # The model
-//! With `η` the elevation of the free surface above the still plane (see [`waves`](crate::waves)),
-//! a vertex `x` lies `h = n·x − level − η(q)` above the surface, `q` its horizontal position.
-//! Over each triangle `h` is taken linear between its vertices (the surface is sampled at the
-//! vertices, once per vertex per evaluation), the triangle is cut exactly where `h = 0` (both
-//! triangles of an edge cut it at the same point: no gaps, no overlaps), and the hydrostatic
-//! pressure `p = −ρ·g·h ≥ 0` is integrated in closed form over the part under water, force and
-//! moment, as [`Method::ExactSurface`] does under still water:
-//!
-//! ```text
-//! F = −∫ p n̂ dA,    τ = −∫ (r − c) × p n̂ dA   over the wetted surface.
-//! ```
-//!
-//! The horizontal forces from the wave slope are part of it. For the calm surface the result is
-//! `ExactSurface`'s.
-//!
-//! # The walk
-//! With `[low, high]` bounds on `η` over the horizontal disc of the mesh's bounding radius
-//! about its centroid ([`WaterSurface::elevation_range`]; `±b` from
-//! [`WaterSurface::elevation_bound`] by default), the free surface lies in the layer between
-//! them, of middle `m = (low + high)/2` and half thickness `b = (high − low)/2`, and the
-//! hierarchy is walked against that layer: a node more than `b` above its middle is dry and
-//! skipped; a leaf within reach of the layer has its triangles cut and integrated one by one;
-//! a node more than `b` below is under water all over, and is summed without visiting its
-//! triangles' corners. For waves long against the body the layer is thin wherever it lies.
-//!
-//! Every sum of a triangle is linear in its vertex heights but one (see `vertex_terms`): per
-//! vertex, twelve coefficients summed over the triangles around it give the linear part of
-//! every triangle around a *wet* vertex (below the free surface) in one multiply-add each. The
-//! triangles under water all over, in the submerged nodes or in the crossed leaves, then add
-//! only their quadratic term, three heights each; the triangles the surface cuts are
-//! integrated whole and take their shares back out of their wet corners' sums. The surface is
-//! evaluated at every vertex that may be wet: with the pressure `ρg(η − z)` at every depth,
-//! every wet vertex's `η` counts.
-//!
-//! The result is a [`Buoyancy`]: `submerged_volume` is the volume implied by the vertical force,
-//! `n·F/(ρ·g)`; `center_of_buoyancy` is a point of the force's line of action (the central axis
-//! of the force and torque): the one nearest the still-water center of buoyancy formula applied
-//! to the wetted surface, which under still water lies on that line already. `wetted_area` is
-//! the area of the wetted pieces, exact: the cut triangles' shares of their area, the whole
-//! triangles' areas, and the submerged nodes' stored sums.
+//! The hydrostatic pressure of a moving free surface integrated over the wetted surface: see
+//! [the guide](crate::query#waves-the-hydrostatic-pressure).
+
+pub(crate) mod vertex_terms;
 
 use alloc::vec::Vec;
 
 use nalgebra::{Point3, Vector3};
 
-use crate::clip::{TriangleClass, classify};
-use crate::frame::Frame;
-use crate::hierarchy::Visit;
-use crate::reduction::Sums;
+use crate::mesh::hierarchy::Visit;
+use crate::query::clip::{TriangleClass, classify};
+use crate::query::frame::Frame;
+use crate::query::reduction::Sums;
 #[cfg(test)]
-use crate::reduction::reduce;
-use crate::surface::SurfaceSums;
-use crate::vertex_terms::LinearSums;
-use crate::waves::WaterSurface;
+use crate::query::reduction::reduce;
+use crate::query::surface_integral::SurfaceSums;
+use crate::query::waves::vertex_terms::LinearSums;
+use crate::water::WaterSurface;
 use crate::{Buoyancy, Error, Mesh, Method, Pose, Real, Water};
 
 impl<T: Real> Mesh<T> {
     /// The buoyancy of this mesh placed by `pose` (mesh → world) in `water` whose free surface
     /// is `surface` at `time` (s): the hydrostatic pressure of the waves integrated exactly over
-    /// the wetted surface (see the [module documentation](crate::wave_pressure)). The torque is
+    /// the wetted surface (see the [guide](crate::query#waves-the-hydrostatic-pressure)). The torque is
     /// about the body's center of mass.
     ///
     /// The cost follows what is under water: with the layer the surface's
     /// [`elevation_range`](WaterSurface::elevation_range) gives over the body, the hierarchy
     /// skips the nodes above it, integrates triangle by triangle only the leaves within it, and
     /// sums the rest through per-vertex coefficients (see [the
-    /// walk](crate::wave_pressure#the-walk)). The surface is evaluated once per vertex that may
+    /// walk](crate::query#the-walk)). The surface is evaluated once per vertex that may
     /// be wet, in one call for up to 16,384 vertices. A calm surface (`b = 0`) is
     /// [`Method::ExactSurface`] on the hierarchy. It allocates a
     /// number per vertex and a point per vertex that may be wet.
     ///
     /// ```
-    /// use buoyancy_core::waves::{AiryComponent, AiryWaves, CalmSurface};
-    /// use buoyancy_core::{shape, Mesh, Method, Pose, Traversal, Water};
+    /// use buoyancy_core::water::{AiryComponent, AiryWaves, CalmSurface};
+    /// use buoyancy_core::{mesh::primitives, Mesh, Method, Pose, Traversal, Water};
     /// use nalgebra::{Translation3, UnitQuaternion, Vector3};
     ///
-    /// let (v, t) = shape::cube::<f64>(4)?;
+    /// let (v, t) = primitives::cube::<f64>(4)?;
     /// let cube = Mesh::new(v, t)?;
     /// let pose = Pose::from_parts(Translation3::new(0.0, -0.2, 0.0), UnitQuaternion::identity());
     /// let water = Water::default();
@@ -617,11 +577,11 @@ pub(crate) fn on_line_of_action<T: Real>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shape;
-    use crate::waves::{AiryComponent, AiryWaves, CalmSurface, HeightGrid, SurfaceFn};
+    use crate::mesh::primitives;
+    use crate::water::{AiryComponent, AiryWaves, CalmSurface, HeightGrid, SurfaceFn};
     use nalgebra::{Point3, Translation3, UnitQuaternion};
 
-    fn mesh(shape: Result<shape::Shape<f64>, Error>) -> Mesh<f64> {
+    fn mesh(shape: Result<primitives::Shape<f64>, Error>) -> Mesh<f64> {
         let (vertices, triangles) = shape.unwrap();
         Mesh::new(vertices, triangles).unwrap()
     }
@@ -690,7 +650,7 @@ mod tests {
     /// the still plane and under a short sea, at poses across the waterline.
     #[test]
     fn walk_equals_scan_in_f32() {
-        let (v, t) = shape::torus::<f32>(1.0, 0.4, 48, 24).unwrap();
+        let (v, t) = primitives::torus::<f32>(1.0, 0.4, 48, 24).unwrap();
         let torus = Mesh::new(v, t).unwrap();
         let seas = [(0.5_f32, 40.0_f32), (0.08, 1.7)].map(|(amplitude, wavelength)| {
             AiryWaves::new(
@@ -740,9 +700,9 @@ mod tests {
     #[test]
     fn walk_equals_scan_under_every_kind_of_surface() {
         let meshes = [
-            mesh(shape::torus(1.0, 0.4, 48, 24)),
-            mesh(shape::uv_sphere(0.8, 40, 20)),
-            mesh(shape::cube(6)),
+            mesh(primitives::torus(1.0, 0.4, 48, 24)),
+            mesh(primitives::uv_sphere(0.8, 40, 20)),
+            mesh(primitives::cube(6)),
         ];
         let airy = AiryWaves::new(
             (0..4)
@@ -823,7 +783,7 @@ mod tests {
     /// fully submerged triangles and the mesh's.
     #[test]
     fn wetted_area_of_the_walk() {
-        let sphere = mesh(shape::uv_sphere(0.8, 40, 20));
+        let sphere = mesh(primitives::uv_sphere(0.8, 40, 20));
         let airy = AiryWaves::new(
             alloc::vec![AiryComponent {
                 amplitude: 0.15,
@@ -882,7 +842,7 @@ mod tests {
     fn parallel_walk_is_bit_identical() {
         use alloc::vec;
         use alloc::vec::Vec;
-        let mesh = mesh(shape::torus(1.0, 0.4, 400, 60));
+        let mesh = mesh(primitives::torus(1.0, 0.4, 400, 60));
         let airy = AiryWaves::new(
             vec![AiryComponent {
                 amplitude: 0.1,

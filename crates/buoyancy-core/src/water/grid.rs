@@ -16,7 +16,7 @@ use crate::{Error, Real, Water};
 /// which copies into the grid's own storage and never reallocates.
 ///
 /// ```
-/// use buoyancy_core::waves::{HeightGrid, WaterSurface};
+/// use buoyancy_core::water::{HeightGrid, WaterSurface};
 /// use buoyancy_core::Water;
 /// use nalgebra::{Point3, Vector3};
 ///

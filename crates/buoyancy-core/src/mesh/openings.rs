@@ -6,8 +6,8 @@ use core::ops::Range;
 
 use nalgebra::{Point3, Vector3};
 
-use crate::frame::Frame;
-use crate::validation::{self, DefectKind};
+use crate::mesh::validation::{self, DefectKind};
+use crate::query::frame::Frame;
 use crate::{Error, Mesh, Pose, Real, Water};
 
 /// An opening of a hull, closed by a flat lid when the mesh was built
@@ -72,11 +72,11 @@ impl<T: Real> Mesh<T> {
     /// is built exactly as [`Mesh::new`] builds it, no lid and no cost.
     ///
     /// ```
-    /// use buoyancy_core::{Error, Mesh, Method, Pose, Water, shape};
+    /// use buoyancy_core::{Error, Mesh, Method, Pose, Water, mesh::primitives};
     /// use nalgebra::{Translation3, UnitQuaternion};
     ///
     /// // A unit cube without its top face (y = 1/2): an open box.
-    /// let (v, t) = shape::cube::<f64>(2)?;
+    /// let (v, t) = primitives::cube::<f64>(2)?;
     /// let hull: Vec<[u32; 3]> =
     ///     t.into_iter().filter(|t| !t.iter().all(|&i| v[i as usize].y == 0.5)).collect();
     /// assert!(Mesh::new(v.clone(), hull.clone()).is_err());

@@ -1,30 +1,4 @@
-//! A coarse copy of a mesh's surface, built once, for the pressure drag of the
-//! [damping](crate::damping) model: [`ReducedMesh`].
-//!
-//! The pressure drag is integrated exactly over every wetted triangle, clipped where the normal
-//! velocity changes sign, so its cost grows with the wetted triangles (a 5,000-triangle mesh
-//! half under water: about 3,000 of them). Its integrand is smooth in the surface (the local
-//! normal and position), so a surface of a few hundred triangles that keeps the mesh's shape
-//! (its area, the area-weighted normals of each region, its volume) gives nearly the same force
-//! and torque at a fraction of the cost. The buoyancy keeps the full mesh: it is exact, and its
-//! hierarchy makes it follow the waterline.
-//!
-//! # The reduction: vertex clustering
-//! The mesh's box (mesh frame) is cut into cubic cells of side `s = L / r` (`L` the box's
-//! longest side, `r` the resolution); the vertices of a cell merge into one representative,
-//! the point `x` that minimises the area-weighted squared distances to the planes of the
-//! triangles around the cell's vertices (the quadric error of Garland and Heckbert),
-//! `Σ Aₜ (n̂ₜ·x − dₜ)²`, plus `λ·|x − m|²` toward the mean `m` of the cell's vertices (`λ`
-//! 10⁻³ of the mean eigenvalue of the quadric), so that a flat or creased patch keeps its
-//! representative on it; a solution outside the cell grown by one cell on each side is
-//! replaced by `m`. Triangles whose corners fall in fewer than three cells vanish; two
-//! triangles on the same three representatives with opposite windings (a sheet folded onto
-//! itself) cancel. The result is a triangle soup, not necessarily a closed manifold: the drag
-//! does not need one. The largest resolution whose result has at most the requested number of
-//! triangles is kept (found by bisection over `r` in `[2, 1024)`).
-//!
-//! A reduction that loses too much of the surface (its area or volume more than 10 % off the
-//! mesh's, a flat or very thin mesh at a coarse resolution) is refused: the full mesh is used.
+//! A coarse copy of a mesh's surface for the damping's pressure drag: [`ReducedMesh`].
 
 use alloc::collections::BTreeMap;
 use alloc::vec::Vec;
@@ -38,13 +12,40 @@ use crate::{Mesh, Real};
 pub const MIN_REDUCED_TRIANGLES: usize = 64;
 
 /// Largest relative difference of the reduced surface's area or enclosed volume from the
-/// mesh's for the reduction to be kept (see the [module documentation](self)).
+/// mesh's for the reduction to be kept (see [`ReducedMesh`]).
 const SHAPE_TOLERANCE: f64 = 0.1;
 
-/// A coarse copy of a mesh's surface for its pressure drag (see the
-/// [module documentation](self)): triangles with their outward unit normals and areas, in the
+/// A coarse copy of a mesh's surface for its pressure drag: triangles with their outward unit normals and areas, in the
 /// mesh frame, vertices relative to the mesh's centroid, built by [`ReducedMesh::new`] and used
 /// by [`Mesh::reduced_damping`].
+///
+/// A coarse copy of a mesh's surface, built once, for the pressure drag of the
+/// [damping](crate::damping) model: [`ReducedMesh`].
+///
+/// The pressure drag is integrated exactly over every wetted triangle, clipped where the normal
+/// velocity changes sign, so its cost grows with the wetted triangles (a 5,000-triangle mesh
+/// half under water: about 3,000 of them). Its integrand is smooth in the surface (the local
+/// normal and position), so a surface of a few hundred triangles that keeps the mesh's shape
+/// (its area, the area-weighted normals of each region, its volume) gives nearly the same force
+/// and torque at a fraction of the cost. The buoyancy keeps the full mesh: it is exact, and its
+/// hierarchy makes it follow the waterline.
+///
+/// # The reduction: vertex clustering
+/// The mesh's box (mesh frame) is cut into cubic cells of side `s = L / r` (`L` the box's
+/// longest side, `r` the resolution); the vertices of a cell merge into one representative,
+/// the point `x` that minimises the area-weighted squared distances to the planes of the
+/// triangles around the cell's vertices (the quadric error of Garland and Heckbert),
+/// `Σ Aₜ (n̂ₜ·x − dₜ)²`, plus `λ·|x − m|²` toward the mean `m` of the cell's vertices (`λ`
+/// 10⁻³ of the mean eigenvalue of the quadric), so that a flat or creased patch keeps its
+/// representative on it; a solution outside the cell grown by one cell on each side is
+/// replaced by `m`. Triangles whose corners fall in fewer than three cells vanish; two
+/// triangles on the same three representatives with opposite windings (a sheet folded onto
+/// itself) cancel. The result is a triangle soup, not necessarily a closed manifold: the drag
+/// does not need one. The largest resolution whose result has at most the requested number of
+/// triangles is kept (found by bisection over `r` in `[2, 1024)`).
+///
+/// A reduction that loses too much of the surface (its area or volume more than 10 % off the
+/// mesh's, a flat or very thin mesh at a coarse resolution) is refused: the full mesh is used.
 #[derive(Debug, Clone)]
 pub struct ReducedMesh<T: Real> {
     /// Vertices relative to the source mesh's centroid, mesh frame.
@@ -66,7 +67,7 @@ pub struct ReducedMesh<T: Real> {
 
 impl<T: Real> ReducedMesh<T> {
     /// A copy of `mesh`'s surface with at most `max_triangles` triangles (at least
-    /// [`MIN_REDUCED_TRIANGLES`]), by vertex clustering (see the [module documentation](self)).
+    /// [`MIN_REDUCED_TRIANGLES`]), by vertex clustering (see [`ReducedMesh`]).
     ///
     /// `None` when `mesh` has no more triangles than that (it is its own best copy: use
     /// [`Mesh::damping`]), or when no resolution keeps the area and volume within 10 % of the

@@ -1,91 +1,12 @@
-//! Linear Froude–Krylov pressure under Airy and spectral seas: the pressure of the undisturbed
-//! wave, whose wave part decays with depth, integrated over the wetted surface by quadrature.
-//!
-//! # The model
-//! At a point `z` above the still plane (horizontal position `q`), in units of `ρ·g`,
-//!
-//! ```text
-//! p = −z + Σ aᵢ·P(z)·cos θᵢ,   P(z) = cosh k(z+h)/cosh kh   (e^{kz} in deep water),
-//! ```
-//!
-//! `θᵢ = kᵢ·q − ωᵢ·t + φᵢ`. Above the still plane (in a crest) `P = 1`: the pressure is the
-//! hydrostatic one below the local surface (a linear extrapolation of the wave part, no
-//! stretching). The pressure is never negative: it is clipped at zero.
-//!
-//! The wetted surface is the hydrostatic one (each triangle cut where the depth below the
-//! surface, interpolated from its vertices, is zero; see `wave_pressure`). Each wetted piece that
-//! straddles the still plane is cut along it into three triangles (the two cut points shared by
-//! both sides, so that they cover the piece exactly): under a crest the wave part's vertical
-//! derivative jumps there, from `a·P′(0)·cos θ` below to zero above, and the cut leaves the
-//! pressure smooth over every part. The pressure is integrated over each part by the degree-5,
-//! 7-point rule of Dunavant, exact for polynomials of degree 5 over a part.
-//!
-//! # Quadrature error
-//! Measured against a reference that integrates the same wetted pieces with the same pressure
-//! on `4² = 16` congruent sub-triangles each, refined up to 6 times more (to `1/256` of the
-//! piece) where the pressure is clipped to zero over part of a sub-triangle, each final
-//! sub-triangle that straddles the still plane (or the bottom) cut along it by the waterline's
-//! clipping rather than by the production cut, the same rule on each part; so the two differ
-//! only by quadrature, and the cut (the waterline interpolated between vertices) and the
-//! faceting are not part of this error. Over 240 random poses (the body cut by the surface or
-//! submerged, holding at least 5 % of its volume's weight) of a UV sphere (radius 0.5 m, 32×16),
-//! a torus (0.6/0.25 m, 32×12) and a unit cube (`n = 4`) in five Airy seas (a long swell, `a`
-//! 0.5 m, `λ` 25 m; a moderate sea over 3 m of water, 0.2 m at 4 m and 0.1 m at 6 m; a short
-//! steep wave, 0.06 m at 1 m, `k·a` 0.38; a shallow sea, 0.12 m at 2.5 m over 1.2 m of water;
-//! five components from 0.15 m at 8 m to 0.025 m at 1.1 m in deep water, spread in direction),
-//! the error in force relative to `|F|` and in torque relative to `|F|·R` (`R` the mesh's
-//! bounding radius) are, with the bounds the test asserts:
-//!
-//! ```text
-//! sea                   k·L         force: worst  median     torque: worst  median    bounds
-//! long, deep            0.03–0.09   6.4e-14       ≤ 1.3e-14  1.8e-12        ≤ 5.4e-13 5e-13, 1e-11
-//! moderate, depth 3 m   0.22–0.56   3.2e-7        ≤ 2.4e-9   2.0e-7         ≤ 2.6e-9  2e-6, 1e-6
-//! short steep, deep     0.87–2.22   2.4e-5        ≤ 7.6e-7   8.8e-6         ≤ 3.4e-7  1e-4, 5e-5
-//! shallow, depth 1.2 m  0.35–0.89   3.8e-7        ≤ 4.6e-9   2.4e-7         ≤ 9.0e-9  2e-6, 1e-6
-//! 5 components, deep    0.79–2.02   4.6e-5        ≤ 6.6e-6   1.7e-5         ≤ 1.5e-6  2e-4, 1e-4
-//! ```
-//!
-//! (`k` the largest wavenumber, `L` the mesh's longest edge; the medians are the largest of the
-//! three meshes'.) The one-point (centroid) rule, with the same cut, fails every sea's bounds,
-//! by 7 times at least; the rule on the uncut pieces fails those of the long, moderate and
-//! shallow seas (1.2e-5, 1.1e-4 and 1.2e-4 in force), not those of the other two, whose
-//! figures are not the still plane's (below). The reference moves by 3.3 % of the bounds at
-//! most from one level less everywhere (4 sub-triangles a piece, refined 5 times). The
-//! per-mesh table is printed by
-//!
-//! ```text
-//! cargo test -p buoyancy-core --lib froude_krylov -- --nocapture
-//! ```
-//!
-//! What the error depends on:
-//! * Where the pressure is smooth over a part, the rule's error is of order `(k·L)⁶` relative to
-//!   the wave part, `L` the size of the part: measured once with `P` made smooth across the
-//!   still plane (`e^{kz}` above it too) and the pieces uncut, 1e-9 to 2e-7 on these meshes,
-//!   falling by about 2⁷ when `L` halves. The long swell, which neither kink below reaches,
-//!   shows it alone: 6e-14 in force, 2e-12 in torque.
-//! * The kink at the still plane is cut out. Without the cut (the rule on the whole pieces) it
-//!   dominated every sea's figures: on a piece that straddles the still plane under a crest the
-//!   pressure is only continuous, and the rule's error on it is of order `k·a·L` times its area
-//!   instead of `(k·L)⁶`; summed over the pieces along the waterline, it grows with the slope
-//!   `k·a` and is of second order in `L` (halving `L` divided it by about 5): worst 1.2e-5
-//!   (long swell) to 1.2e-4 in force, 1.2e-5 to 4.5e-5 in torque, over the same poses.
-//! * What remains above the `(k·L)⁶` level comes from two kinks that no planar cut follows.
-//!   The clip at zero pressure: in a trough, the waterline interpolated between vertices runs
-//!   above the surface where the pressure reaches zero, and over the sliver between them the
-//!   pressure is clipped, a kink along a curve inside the piece. It makes the worst figures of
-//!   the moderate, short and 5-component seas, largest on the coarsest mesh, the cube: with
-//!   it refined away as well (measured once), they fall from 3.2e-7, 2.4e-5 and 4.6e-5 to
-//!   1.5e-8, 2.9e-6 and 7.3e-8. The bottom: in finite depth `P` is held at its bottom value
-//!   below `z = −h`, a jump of its second derivative (`P′(−h) = 0`); the shallow sea's worst
-//!   figure, 3.8e-7, is a pose of the cube reaching 0.15 m below the 1.2 m bottom (a cut along
-//!   the bottom as well, measured once, leaves 6.6e-8).
+//! The linear Froude–Krylov pressure of Airy and spectral seas integrated over the wetted
+//! surface by quadrature: see [the guide](crate::query#waves-the-froude-krylov-pressure).
 
 use nalgebra::{Point3, Vector3};
 
-use crate::buoyancy::TriangleCounts;
-use crate::clip::{TriangleClass, WaterlineCut, classify, clip_below, cut_at_waterline};
-use crate::wave_pressure::on_line_of_action;
-use crate::waves::{AiryWaves, ResolvedWave, pressure_ratio, resolve};
+use crate::query::clip::{TriangleClass, WaterlineCut, classify, clip_below, cut_at_waterline};
+use crate::query::result::TriangleCounts;
+use crate::query::waves::on_line_of_action;
+use crate::water::{AiryWaves, ResolvedWave, pressure_ratio, resolve};
 use crate::{Buoyancy, Error, Mesh, Pose, Real, Water};
 
 /// Dunavant's degree-5 rule on a triangle: barycentric coordinates `(α, β, β)` (and their
@@ -388,18 +309,18 @@ impl<T: Real> Sea<T> {
 impl<T: Real> Mesh<T> {
     /// The buoyancy of this mesh placed by `pose` in `water` under the Airy or spectral sea
     /// `waves` at `time` (s), by the linear Froude–Krylov pressure (see the
-    /// [module documentation](crate::froude_krylov)): the pressure of the undisturbed wave,
+    /// [guide](crate::query#waves-the-froude-krylov-pressure)): the pressure of the undisturbed wave,
     /// whose wave part decays with depth, integrated over the wetted surface. The torque is
     /// about the center of mass; the center is the point of the force's line of action nearest
     /// the center of mass; the volume is the one implied by the vertical force.
     ///
     /// ```
-    /// use buoyancy_core::waves::{AiryComponent, AiryWaves};
-    /// use buoyancy_core::{shape, Mesh, Pose, Water};
+    /// use buoyancy_core::water::{AiryComponent, AiryWaves};
+    /// use buoyancy_core::{mesh::primitives, Mesh, Pose, Water};
     /// use nalgebra::{Translation3, UnitQuaternion, Vector3};
     ///
     /// // A ball 3 m under a 10 m swell: the wave part of the pressure has decayed by e^{−k·3}.
-    /// let (v, t) = shape::uv_sphere::<f64>(0.5, 48, 24)?;
+    /// let (v, t) = primitives::uv_sphere::<f64>(0.5, 48, 24)?;
     /// let ball = Mesh::new(v, t)?;
     /// let swell = AiryWaves::new(
     ///     vec![AiryComponent { amplitude: 0.5, wavelength: 10.0, direction: Vector3::x(), phase: 0.0 }],
@@ -519,8 +440,8 @@ impl<T: Real> Mesh<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shape;
-    use crate::waves::AiryComponent;
+    use crate::mesh::primitives;
+    use crate::water::AiryComponent;
     use alloc::string::String;
     use alloc::vec;
     use alloc::vec::Vec;
@@ -613,17 +534,20 @@ mod tests {
     }
 
     fn meshes() -> Vec<(&'static str, Mesh<f64>)> {
-        let mesh = |s: Result<shape::Shape<f64>, Error>| {
+        let mesh = |s: Result<primitives::Shape<f64>, Error>| {
             let (v, t) = s.unwrap();
             Mesh::new(v, t).unwrap()
         };
         vec![
-            ("sphere r 0.5, 32×16", mesh(shape::uv_sphere(0.5, 32, 16))),
+            (
+                "sphere r 0.5, 32×16",
+                mesh(primitives::uv_sphere(0.5, 32, 16)),
+            ),
             (
                 "torus 0.6/0.25, 32×12",
-                mesh(shape::torus(0.6, 0.25, 32, 12)),
+                mesh(primitives::torus(0.6, 0.25, 32, 12)),
             ),
-            ("cube 1 m, n 4", mesh(shape::cube(4))),
+            ("cube 1 m, n 4", mesh(primitives::cube(4))),
         ]
     }
 

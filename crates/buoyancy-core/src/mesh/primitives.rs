@@ -354,10 +354,10 @@ fn tube_fits(point: &impl Fn(f64) -> Vector3<f64>, samples: usize, r: f64) -> bo
 /// higher topside needs a lower center of mass (ballast).
 ///
 /// ```
-/// use buoyancy_core::{Mesh, Method, Pose, Water, shape};
+/// use buoyancy_core::{Mesh, Method, Pose, Water, mesh::primitives};
 ///
 /// let (length, beam, draft) = (2.5, 0.25, 0.15625);
-/// let (v, t) = shape::wigley_hull::<f64>(length, beam, draft, 0.1, 41, 17)?;
+/// let (v, t) = primitives::wigley_hull::<f64>(length, beam, draft, 0.1, 41, 17)?;
 /// let hull = Mesh::new(v, t)?;
 /// let b = hull.buoyancy(&Pose::identity(), &Water::default(), Method::Exact)?;
 /// let displacement = 4.0 * length * beam * draft / 9.0;
@@ -667,7 +667,7 @@ pub fn capsule<T: Real>(
 /// indices out of range are left for [`Mesh::new`](crate::Mesh::new) to report.
 ///
 /// ```
-/// use buoyancy_core::{Mesh, nalgebra::Point3, shape};
+/// use buoyancy_core::{Mesh, nalgebra::Point3, mesh::primitives};
 ///
 /// // A tetrahedron given face by face: 12 vertices, no edge shared until welded.
 /// let corners = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
@@ -675,7 +675,7 @@ pub fn capsule<T: Real>(
 /// let points: Vec<Point3<f64>> = faces.iter().flatten().map(|&i| corners[i].into()).collect();
 /// let mut triangles: Vec<[u32; 3]> = (0..4).map(|t| [3 * t, 3 * t + 1, 3 * t + 2]).collect();
 /// assert!(Mesh::new(points.clone(), triangles.clone()).is_err());
-/// shape::weld(&points, &mut triangles);
+/// primitives::weld(&points, &mut triangles);
 /// assert!((Mesh::new(points, triangles)?.volume() - 1.0 / 6.0).abs() < 1e-15);
 /// # Ok::<(), buoyancy_core::Error>(())
 /// ```

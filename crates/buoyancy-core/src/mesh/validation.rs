@@ -182,10 +182,10 @@ impl Defect {
 /// the edge counts describe the mesh without the triangles reported for their indices.
 ///
 /// ```
-/// use buoyancy_core::{DefectKind, Error, Mesh, shape};
+/// use buoyancy_core::{DefectKind, Error, Mesh, mesh::primitives};
 ///
 /// // A cube whose triangles each have their own three vertices, as STL files store them.
-/// let (v, t) = shape::cube::<f64>(1)?;
+/// let (v, t) = primitives::cube::<f64>(1)?;
 /// let soup_vertices = t.iter().flat_map(|t| t.map(|i| v[i as usize])).collect();
 /// let soup_triangles = (0..t.len() as u32).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect();
 /// let Err(Error::InvalidMesh(defects)) = Mesh::new(soup_vertices, soup_triangles) else {

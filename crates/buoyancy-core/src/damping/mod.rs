@@ -57,11 +57,11 @@ use stiffness::DragStiffness;
 pub(crate) use stiffness::add_block;
 pub use stiffness::{DampingStiffness, angular_damping_stiffness};
 
-use crate::clip::clip_below;
-use crate::frame::Frame;
-use crate::hierarchy::Visit;
+use crate::mesh::ReducedMesh;
 use crate::mesh::TriangleNormal;
-use crate::reduced_mesh::ReducedMesh;
+use crate::mesh::hierarchy::Visit;
+use crate::query::clip::clip_below;
+use crate::query::frame::Frame;
 use crate::{Error, Mesh, Pose, Real, Water};
 
 /// The coefficients of the damping model (see the [module documentation](self)), SI units.
@@ -470,10 +470,10 @@ impl<T: Real> Mesh<T> {
     /// again as the damping over the pieces facing the flow. No allocation.
     ///
     /// ```
-    /// use buoyancy_core::{DampingCoefficients, Mesh, Pose, Water, shape};
+    /// use buoyancy_core::{DampingCoefficients, Mesh, Pose, Water, mesh::primitives};
     /// use nalgebra::{Translation3, UnitQuaternion, Vector3};
     ///
-    /// let (vertices, triangles) = shape::cube::<f64>(1)?;
+    /// let (vertices, triangles) = primitives::cube::<f64>(1)?;
     /// let cube = Mesh::new(vertices, triangles)?;
     /// let under = Pose::from_parts(Translation3::new(0.0, -3.0, 0.0), UnitQuaternion::identity());
     /// // Sinking at 1 m/s: the bottom face (1 m²) alone faces the flow, u = 1 m/s all over it,
@@ -646,11 +646,11 @@ impl<T: Real> Mesh<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Method, shape};
+    use crate::{Method, mesh::primitives};
     use nalgebra::{Translation3, UnitQuaternion};
 
     fn cube(side: f64) -> Mesh<f64> {
-        let (v, t) = shape::cube::<f64>(4).unwrap();
+        let (v, t) = primitives::cube::<f64>(4).unwrap();
         Mesh::new(v.into_iter().map(|p| p * side).collect(), t).unwrap()
     }
 
@@ -677,7 +677,7 @@ mod tests {
         let omega = 3.0;
         let expected = -4.0 * (1000.0 * omega / 24.0 + 500.0 * omega * omega / 64.0);
         for n in [1, 2, 5] {
-            let (v, t) = shape::cube::<f64>(n).unwrap();
+            let (v, t) = primitives::cube::<f64>(n).unwrap();
             let c = Mesh::new(v, t).unwrap();
             let d = damp(
                 &c,
@@ -701,7 +701,7 @@ mod tests {
         let results: alloc::vec::Vec<Damping<f64>> = [1, 3, 6]
             .into_iter()
             .map(|n| {
-                let (v, t) = shape::cube::<f64>(n).unwrap();
+                let (v, t) = primitives::cube::<f64>(n).unwrap();
                 let c = Mesh::new(v, t).unwrap();
                 let pose = Pose::from_parts(
                     Translation3::new(0.0, 0.1, 0.0),
@@ -869,7 +869,7 @@ mod tests {
     fn angular_damping_scales_with_the_wetted_fraction() {
         // A sphere spinning about its center: the pressure drag is zero (the surface moves
         // tangentially), the angular damping alone acts, in proportion to what is wet.
-        let (v, t) = shape::uv_sphere::<f64>(1.0, 48, 24).unwrap();
+        let (v, t) = primitives::uv_sphere::<f64>(1.0, 48, 24).unwrap();
         let s = Mesh::new(v, t).unwrap();
         let w = Vector3::new(0.0, 3.0, 0.0);
         let half = damp(&s, &at(0.0, 0.0, 0.0), Vector3::zeros(), w);
@@ -931,7 +931,7 @@ mod tests {
             })
         ));
         // f32 too.
-        let (v, t) = shape::cube::<f32>(2).unwrap();
+        let (v, t) = primitives::cube::<f32>(2).unwrap();
         let c32 = Mesh::new(v, t).unwrap();
         let pose = Pose::from_parts(
             Translation3::new(0.0f32, -0.2, 0.0),

@@ -14,12 +14,12 @@
 
 use nalgebra::Vector3;
 
-use crate::buoyancy::TriangleCounts;
-use crate::clip::{TriangleClass, WaterlineCut, classify, cut_at_waterline};
-use crate::frame::Frame;
-use crate::hierarchy::Visit;
-use crate::node_sums::VolumeNodeSums;
-use crate::reduction::{Sums, reduce};
+use crate::mesh::hierarchy::Visit;
+use crate::mesh::node_sums::VolumeNodeSums;
+use crate::query::clip::{TriangleClass, WaterlineCut, classify, cut_at_waterline};
+use crate::query::frame::Frame;
+use crate::query::reduction::{Sums, reduce};
+use crate::query::result::TriangleCounts;
 use crate::{Buoyancy, Mesh, Method, Real, Water};
 
 /// Running sums of the volume methods, about a reference point `o`.
