@@ -6,6 +6,7 @@
 
 mod common;
 
+use buoyancy::query::Query;
 use std::hint::black_box;
 
 use buoyancy::{Method, Real};
@@ -40,7 +41,7 @@ fn bench_scalar<T: Real>(c: &mut Criterion, scalar: &str) {
                         black_box(
                             model
                                 .mesh
-                                .par_buoyancy(black_box(pose), &water, method)
+                                .buoyancy(black_box(pose), &water, Query::new(method).in_parallel())
                                 .unwrap(),
                         );
                     }

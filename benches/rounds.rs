@@ -12,8 +12,8 @@
 //! * a word of a model's name (`armadillo`, `torus`): only the models whose name contains it;
 //! * a method (`exact`, as in [`Method::name`]) or `damping`: only those rows;
 //! * `scan` or `hierarchy`: only that traversal;
-//! * `parallel` (with `--features rayon`): `Mesh::par_buoyancy_with` instead of
-//!   `Mesh::buoyancy_with`.
+//! * `parallel` (with `--features rayon`): `Query::in_parallel` on the same
+//!   query.
 //!
 //! `BUOYANCY_ROUNDS=N` takes the best of N rounds instead of 15. `BUOYANCY_POSES=N` spreads N
 //! poses over the same sweep instead of 100: with thousands, each pose is close to the one
@@ -22,6 +22,7 @@
 
 mod common;
 
+use buoyancy::query::Query;
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -101,23 +102,23 @@ fn main() {
                         for pose in &poses {
                             #[cfg(feature = "rayon")]
                             let result = if parallel {
-                                model.mesh.par_buoyancy_with(
+                                model.mesh.buoyancy(
                                     black_box(pose),
                                     &water,
-                                    method,
-                                    traversal,
+                                    Query::new(method).with_traversal(traversal).in_parallel(),
                                 )
                             } else {
-                                model
-                                    .mesh
-                                    .buoyancy_with(black_box(pose), &water, method, traversal)
+                                model.mesh.buoyancy(
+                                    black_box(pose),
+                                    &water,
+                                    Query::new(method).with_traversal(traversal),
+                                )
                             };
                             #[cfg(not(feature = "rayon"))]
-                            let result = model.mesh.buoyancy_with(
+                            let result = model.mesh.buoyancy(
                                 black_box(pose),
                                 &water,
-                                method,
-                                traversal,
+                                Query::new(method).with_traversal(traversal),
                             );
                             black_box(result.unwrap());
                         }

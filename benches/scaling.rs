@@ -16,6 +16,7 @@ mod common;
 #[path = "common/plot_font.rs"]
 mod plot_font;
 
+use buoyancy::query::Query;
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -91,8 +92,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             common::microseconds(poses.len(), || {
                 for pose in &poses {
                     black_box(
-                        mesh.buoyancy_with(black_box(pose), &water, method, traversal)
-                            .unwrap(),
+                        mesh.buoyancy(
+                            black_box(pose),
+                            &water,
+                            Query::new(method).with_traversal(traversal),
+                        )
+                        .unwrap(),
                     );
                 }
             })

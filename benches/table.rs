@@ -8,6 +8,7 @@
 
 mod common;
 
+use buoyancy::query::Query;
 use std::fmt::Write as _;
 use std::hint::black_box;
 
@@ -23,10 +24,10 @@ enum Mode {
     Default,
     /// One thread, every triangle (`Traversal::Scan`).
     Scan,
-    /// `Mesh::par_buoyancy`: the default traversal, its subtrees on rayon's pool.
+    /// `Query::in_parallel`: the default traversal, its subtrees on rayon's pool.
     #[cfg_attr(not(feature = "rayon"), allow(dead_code))]
     Parallel,
-    /// `Mesh::par_buoyancy_with(…, Traversal::Scan)`: every triangle, in parallel chunks.
+    /// `Query::in_parallel` on `Traversal::Scan`: every triangle, in parallel chunks.
     #[cfg_attr(not(feature = "rayon"), allow(dead_code))]
     ParallelScan,
 }
@@ -44,19 +45,25 @@ fn measure<T: Real>(models: &[common::Model<T>], mode: Mode) -> Vec<[f64; 5]> {
                         let pose = black_box(pose);
                         let result = match mode {
                             Mode::Default => model.mesh.buoyancy(pose, &water, method),
-                            Mode::Scan => {
+                            Mode::Scan => model.mesh.buoyancy(
+                                pose,
+                                &water,
+                                Query::new(method).with_traversal(Traversal::Scan),
+                            ),
+                            #[cfg(feature = "rayon")]
+                            Mode::Parallel => {
                                 model
                                     .mesh
-                                    .buoyancy_with(pose, &water, method, Traversal::Scan)
+                                    .buoyancy(pose, &water, Query::new(method).in_parallel())
                             }
                             #[cfg(feature = "rayon")]
-                            Mode::Parallel => model.mesh.par_buoyancy(pose, &water, method),
-                            #[cfg(feature = "rayon")]
-                            Mode::ParallelScan => {
-                                model
-                                    .mesh
-                                    .par_buoyancy_with(pose, &water, method, Traversal::Scan)
-                            }
+                            Mode::ParallelScan => model.mesh.buoyancy(
+                                pose,
+                                &water,
+                                Query::new(method)
+                                    .with_traversal(Traversal::Scan)
+                                    .in_parallel(),
+                            ),
                             #[cfg(not(feature = "rayon"))]
                             Mode::Parallel | Mode::ParallelScan => {
                                 unreachable!("parallel figures need --features rayon")
@@ -212,14 +219,14 @@ fn main() {
             Mode::Parallel,
             &serial64,
             format!(
-                "The default traversal split across {threads} threads by rayon (`par_buoyancy`: the hierarchy's halves from 100,000 triangles, so the paper's models run on one thread), f64, and its speed-up over `Mesh::buoyancy`:"
+                "The default traversal split across {threads} threads by rayon (`Query::in_parallel`: the hierarchy's halves from 100,000 triangles, so the paper's models run on one thread), f64, and its speed-up over `Mesh::buoyancy`:"
             ),
         );
         report += &parallel(
             Mode::ParallelScan,
             &scan64,
             format!(
-                "The scan split across {threads} threads (`par_buoyancy_with(…, Traversal::Scan)`: chunks of 4,096 triangles), f64, and its speed-up over the one-thread scan:"
+                "The scan split across {threads} threads (`Query::in_parallel` on `Traversal::Scan`: chunks of 4,096 triangles), f64, and its speed-up over the one-thread scan:"
             ),
         );
     }

@@ -1,17 +1,18 @@
-//! Buoyancy on waves (`Mesh::buoyancy_in_waves`): µs per evaluation on the paper's models under
+//! Buoyancy on waves (`Mesh::buoyancy` under a `Sea`): µs per evaluation on the paper's models under
 //! a calm surface, a 512² periodic height grid, 8 Airy components, a 64-component JONSWAP sea
 //! and 3 Gerstner components, and the Froude–Krylov pressure of the 8 Airy components, f64, one
 //! thread, at the paper's 100 poses (the wave's time
 //! advancing 0.05 s per pose). Each figure is the median over 7 batches (see
 //! `common::microseconds`); the last column is Exact Surface under still water, for scale.
 //!
-//! With `--features rayon`, a column of `Mesh::par_buoyancy_in_waves` on the Airy sea.
+//! With `--features rayon`, a column of `Query::in_parallel` on the Airy sea.
 //!
 //! `cargo bench --bench waves [--features rayon] [-- large] [WORD...]` (`large` adds the 10⁶-triangle torus knot;
 //! other words keep the models and columns whose names contain one of them, e.g. `bunny airy`).
 
 mod common;
 
+use buoyancy::query::{Pressure, Query, Sea};
 use std::hint::black_box;
 
 use buoyancy::nalgebra::{Point3, Vector3};
@@ -102,7 +103,10 @@ fn main() {
             (
                 name.to_string(),
                 Box::new(move |mesh, pose, time| {
-                    black_box(mesh.buoyancy_in_waves(pose, water, surface, time).unwrap());
+                    black_box(
+                        mesh.buoyancy(pose, Sea::new(water, surface, time), Method::ExactSurface)
+                            .unwrap(),
+                    );
                 }),
             )
         })
@@ -111,8 +115,12 @@ fn main() {
         "Froude–Krylov, Airy ×8".into(),
         Box::new(|mesh, pose, time| {
             black_box(
-                mesh.buoyancy_froude_krylov(pose, &water, &airy, time)
-                    .unwrap(),
+                mesh.buoyancy(
+                    pose,
+                    Sea::new(&water, &airy, time).with_pressure(Pressure::FroudeKrylov),
+                    Method::ExactSurface,
+                )
+                .unwrap(),
             );
         }),
     ));
@@ -121,8 +129,12 @@ fn main() {
         format!("Airy ×8, {} threads", rayon::current_num_threads()),
         Box::new(|mesh, pose, time| {
             black_box(
-                mesh.par_buoyancy_in_waves(pose, &water, &airy, time)
-                    .unwrap(),
+                mesh.buoyancy(
+                    pose,
+                    Sea::new(&water, &airy, time),
+                    Query::new(Method::ExactSurface).in_parallel(),
+                )
+                .unwrap(),
             );
         }),
     ));
@@ -130,8 +142,12 @@ fn main() {
         "still water, Exact Surface".into(),
         Box::new(|mesh, pose, _| {
             black_box(
-                mesh.buoyancy_with(pose, &water, Method::ExactSurface, Traversal::Auto)
-                    .unwrap(),
+                mesh.buoyancy(
+                    pose,
+                    &water,
+                    Query::new(Method::ExactSurface).with_traversal(Traversal::Auto),
+                )
+                .unwrap(),
             );
         }),
     ));

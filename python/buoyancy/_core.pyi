@@ -25,7 +25,7 @@ _DefectKind: TypeAlias = Literal[
 _FloatArray: TypeAlias = npt.NDArray[np.float64]
 _Float32Array: TypeAlias = npt.NDArray[np.float32]
 _BoolArray: TypeAlias = npt.NDArray[np.bool_]
-_Outcome: TypeAlias = Literal["not_evaluated", "applied", "inactive", "not_finite"]
+_Outcome: TypeAlias = Literal["not_evaluated", "applied", "inactive", "not_finite", "unsupported"]
 # A part of a floating body: a mesh in the body's frame, or (mesh, position, quaternion) of a mesh
 # in its own frame placed on the body.
 _Part: TypeAlias = Mesh | tuple[Mesh, npt.ArrayLike, npt.ArrayLike]

@@ -754,11 +754,24 @@ def test_a_surface_function_that_fails_undoes_the_step() -> None:
     assert controller.time == pytest.approx(2 / 60)
 
 
-def test_waves_of_the_froude_krylov_pressure_are_refused() -> None:
+def test_waves_of_the_froude_krylov_pressure_are_taken_and_a_flat_method_is_refused() -> None:
     fk = buoyancy.Water(waves=buoyancy.Waves([SWELL], pressure="froude_krylov"))
-    with pytest.raises(ValueError, match="^water: the controller integrates the hydrostatic pressure"):
-        buoyancy.Controller(fk)
-    controller = cubes(1)
-    with pytest.raises(ValueError, match="^water: .*pressure='hydrostatic'"):
-        controller.water = fk
-    assert controller.water.waves is None
+    hydrostatic = buoyancy.Water(waves=buoyancy.Waves([SWELL]))
+    forces = {}
+    for name, water in [("fk", fk), ("hydrostatic", hydrostatic)]:
+        controller = cubes(1, water=water)
+        controller.step(1 / 60, **states(1, positions=np.array([[0.0, -0.8, 0.0]])))
+        report = controller.report(0)
+        assert report.outcome == "applied"
+        forces[name] = report.buoyancy_force
+    # The cube's top 0.3 m under the still level: the same mesh's buoyancy under each pressure.
+    cube = buoyancy.shapes.cube()
+    for name, water in [("fk", fk), ("hydrostatic", hydrostatic)]:
+        expected = cube.buoyancy(position=(0, -0.8, 0), water=water, time=0.0).force
+        np.testing.assert_allclose(forces[name], expected, rtol=1e-9, atol=1e-6)
+    assert not np.allclose(forces["fk"], forces["hydrostatic"], rtol=1e-6)
+    # A method that assumes a flat surface: no force, and the report says why.
+    controller = cubes(1, water=hydrostatic, method="fast")
+    controller.step(1 / 60, **states(1, positions=np.array([[0.0, -0.2, 0.0]])))
+    assert controller.report(0).outcome == "unsupported"
+    np.testing.assert_array_equal(controller.report(0).buoyancy_force, 0.0)

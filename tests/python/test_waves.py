@@ -68,7 +68,7 @@ def test_calm_waves_equal_still_water(waves: object, rng: np.random.Generator) -
             for k, (p, q) in enumerate(zip(positions, rotations, strict=True)):
                 expected = mesh.buoyancy(p, q, water=still, method="exact_surface", traversal="scan")
                 got = mesh.buoyancy(p, q, water=calm, time=1.5 * k)
-                assert got.method == "exact_surface"
+                assert got.method == "exact"
                 assert_same(got, expected, weight)
 
 
@@ -153,7 +153,7 @@ def test_a_batch_with_times_equals_single_calls(surface: str, rng: np.random.Gen
     about = rng.normal(size=(24, 3))
     for threads in (None, 1, 2):
         batch = mesh.buoyancy_batch(positions, rotations, water=water, times=times, about=about, threads=threads)
-        assert batch.method == "exact_surface"
+        assert batch.method == "exact"
         for k in range(24):
             single = mesh.buoyancy(positions[k], rotations[k], water=water, time=times[k], about=about[k])
             assert batch[k] == single, (surface, threads, k)
@@ -321,7 +321,7 @@ def test_hydrostatic_is_the_default_pressure_and_unchanged() -> None:
         a = knot.buoyancy(position, water=buoyancy.Water(waves=default), time=2.0)
         b = knot.buoyancy(position, water=buoyancy.Water(waves=explicit), time=2.0)
         c = knot.buoyancy(position, water=buoyancy.Water(waves=fk), time=2.0)
-        assert a == b and a.method == c.method == "exact_surface"
+        assert a == b and a.method == c.method == "exact"
         assert not np.allclose(a.force, c.force, rtol=1e-6)
     # Calm water is calm under either pressure.
     for mesh in MESHES.values():
@@ -400,8 +400,11 @@ FK_SEA = buoyancy.Water(waves=buoyancy.Waves([buoyancy.AiryWave(0.2, 5.0)], pres
 @pytest.mark.parametrize(
     "call, error, match",
     [
-        (lambda m: m.buoyancy(water=FK_SEA, method="exact"), ValueError, "^method: 'exact' assumes a flat water"),
-        (lambda m: m.buoyancy(water=FK_SEA, traversal="hierarchy"), ValueError, "^traversal: the water has waves"),
+        (
+            lambda m: m.buoyancy(water=FK_SEA, method="improved"),
+            ValueError,
+            "^method: improved cuts the triangles at a flat",
+        ),
         (lambda m: m.buoyancy(water=FK_SEA, time=NAN), ValueError, r"^time: must be finite \(s\)$"),
         (lambda m: m.buoyancy_batch(np.zeros((2, 3)), None, FK_SEA, times=[0, NAN]), ValueError, r"^times\[1\]: must"),
         (lambda m: m.buoyancy(position=(0, NAN, 0), water=FK_SEA), ValueError, "^position: "),
@@ -657,9 +660,16 @@ SEA = buoyancy.Water(waves=buoyancy.AiryWave(0.2, 5.0))
 @pytest.mark.parametrize(
     "call, error, match",
     [
-        (lambda m: m.buoyancy(water=SEA, method="exact"), ValueError, "^method: 'exact' assumes a flat water surface"),
-        (lambda m: m.buoyancy_batch(np.zeros((2, 3)), None, SEA, "fast"), ValueError, "^method: 'fast' assumes a flat"),
-        (lambda m: m.buoyancy(water=SEA, traversal="hierarchy"), ValueError, "^traversal: the water has waves"),
+        (
+            lambda m: m.buoyancy(water=SEA, method="fast_surface"),
+            ValueError,
+            "^method: fast_surface integrates below a flat",
+        ),
+        (
+            lambda m: m.buoyancy_batch(np.zeros((2, 3)), None, SEA, "fast"),
+            ValueError,
+            "^method: fast counts the triangles below a flat",
+        ),
         (lambda m: m.buoyancy(water=SEA, time=NAN), ValueError, r"^time: must be finite \(s\)$"),
         (lambda m: m.buoyancy(water=SEA, time="now"), TypeError, "^time: expected a number, got str$"),
         (lambda m: m.buoyancy(time=math.inf), ValueError, r"^time: must be finite \(s\)$"),

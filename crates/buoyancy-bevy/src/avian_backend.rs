@@ -220,6 +220,7 @@ fn float_avian_bodies(
     }
     books.controller.settings_mut().water = still;
     books.controller.set_surface(water.waves().cloned());
+    books.controller.set_pressure(water.pressure);
     books.controller.set_time(water.time());
     books
         .commands

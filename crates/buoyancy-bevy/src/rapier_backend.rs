@@ -236,6 +236,7 @@ fn float_rapier_bodies(
         }
         bodies.set_water(still);
         bodies.set_surface(water.waves().cloned());
+        bodies.set_pressure(water.pressure);
         bodies.set_time(water.time());
         bodies.apply(&mut set.bodies, dt);
         advanced = Some(f64::from(dt));

@@ -6,6 +6,7 @@ use bevy::math::Vec3;
 use bevy::prelude::Resource;
 use buoyancy_core::controller::SharedSurface;
 use buoyancy_core::nalgebra::{Point3, Vector3};
+use buoyancy_core::query::Pressure;
 use buoyancy_core::water::WaterSurface;
 
 /// The water every [`Floating`](crate::Floating) entity floats in: its density, the height of
@@ -45,6 +46,9 @@ pub struct Water {
     /// The unit up direction; `None` (the default): opposite to the physics gravity.
     pub up: Option<Vec3>,
     surface: Option<SharedSurface>,
+    /// The pressure of the waves (default hydrostatic; Froude–Krylov for Airy waves, whose
+    /// wave part decays with depth).
+    pub pressure: Pressure,
     time: f64,
     /// The up direction the plugin last used (from the gravity when `up` is `None`).
     resolved_up: Vec3,
@@ -59,6 +63,7 @@ impl Default for Water {
             level: 0.0,
             up: None,
             surface: None,
+            pressure: Pressure::Hydrostatic,
             time: 0.0,
             resolved_up: Vec3::Y,
             gravity: 9.81,
@@ -73,6 +78,7 @@ impl std::fmt::Debug for Water {
             .field("level", &self.level)
             .field("up", &self.up)
             .field("waves", &self.surface.is_some())
+            .field("pressure", &self.pressure)
             .field("time", &self.time)
             .finish()
     }

@@ -124,6 +124,15 @@ pub enum Error {
         /// What is wrong with it.
         reason: &'static str,
     },
+    /// A query the water cannot answer as asked ([`Mesh::buoyancy`](crate::Mesh::buoyancy)): a
+    /// method that assumes a flat surface asked for under waves, the hierarchy traversal under
+    /// the Froude–Krylov pressure, that pressure under a surface that is not Airy waves.
+    Unsupported {
+        /// The argument at fault: `method`, `traversal` or `pressure`.
+        parameter: &'static str,
+        /// Why, and what to ask for instead.
+        reason: &'static str,
+    },
     /// A transform given to [`Mesh::transformed`](crate::Mesh::transformed) or
     /// [`Mesh::scaled`](crate::Mesh::scaled) is not a finite, invertible affine map.
     InvalidTransform {
@@ -276,6 +285,7 @@ impl fmt::Display for Error {
             }
             Error::InvalidTransform { reason } => write!(f, "invalid transform: {reason}"),
             Error::InvalidSurface { reason, .. } => write!(f, "invalid water surface: {reason}"),
+            Error::Unsupported { parameter, reason } => write!(f, "{parameter}: {reason}"),
             Error::InvalidVelocity => {
                 write!(f, "invalid velocity: a NaN or infinite component")
             }

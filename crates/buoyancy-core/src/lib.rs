@@ -3,14 +3,24 @@
 //! This crate implements the five methods of Fábián's *Approximate and exact buoyancy
 //! calculation for real-time floating simulation of meshes* against a flat water plane of any
 //! orientation, with the torque of the pressure field integrated exactly: [`Method`] lists them.
-//! [`Mesh::buoyancy`] evaluates one, [`Mesh::damping`] the hydrodynamic damping that lets
-//! floating bodies settle, [`io`] reads OBJ, STL and PLY files and [`mesh::primitives`] builds procedural
-//! meshes.
+//! [`Mesh::buoyancy`] is the one query, in still water and under waves (the hydrostatic or the
+//! Froude–Krylov pressure of a moving [`water`] surface, [`query::Sea`]); [`Mesh::damping`] the
+//! hydrodynamic damping that lets floating bodies settle; [`hydrostatics`] equilibrium and
+//! stability; [`controller`] one controller for physics engines.
+//!
+//! # Modules
+//! * [`mesh`]: the closed mesh, its validation and what is built with it; [`mesh::primitives`]
+//!   builds procedural meshes. [`io`] reads OBJ, STL and PLY files.
+//! * [`water`]: the still water and the surfaces that move over it (Airy, spectral, Gerstner,
+//!   grids, functions).
+//! * [`query`]: the buoyancy query, its methods, its options and its result, with the guide to
+//!   each pressure model.
+//! * [`damping`], [`hydrostatics`], [`controller`].
 //!
 //! # Features
 //! * `std` (default): [`io::load`] (reading files), `std::error::Error` for [`Error`] (through
 //!   `core::error::Error`, which it implements without `std` too) and nalgebra's `std`.
-//! * `rayon`: `Mesh::par_buoyancy` and `Mesh::par_buoyancy_with`, which split one
+//! * `rayon`: `Query::in_parallel` ([`query::Query`]), which splits one
 //!   evaluation's work across rayon's thread pool, bit-identical to the serial result.
 //!
 //! Without default features the crate is `no_std` (it needs `alloc`): everything but reading

@@ -4,6 +4,7 @@
 
 mod common;
 
+use buoyancy_core::query::Query;
 use std::f64::consts::PI;
 
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
@@ -244,7 +245,9 @@ fn assert_wetted_area(
 ) {
     let water = unit_water();
     for traversal in Traversal::ALL {
-        let b = mesh.buoyancy_with(pose, &water, method, traversal).unwrap();
+        let b = mesh
+            .buoyancy(pose, &water, Query::new(method).with_traversal(traversal))
+            .unwrap();
         assert_close(
             &format!("{what}, {method}, {traversal:?}"),
             b.wetted_area,
@@ -255,7 +258,11 @@ fn assert_wetted_area(
         #[cfg(feature = "rayon")]
         {
             let parallel = mesh
-                .par_buoyancy_with(pose, &water, method, traversal)
+                .buoyancy(
+                    pose,
+                    &water,
+                    Query::new(method).with_traversal(traversal).in_parallel(),
+                )
                 .unwrap();
             assert_eq!(
                 parallel.wetted_area, b.wetted_area,

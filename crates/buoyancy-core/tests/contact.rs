@@ -4,6 +4,7 @@
 //! For all five methods, both traversals, at random attitudes.
 
 use buoyancy_core::nalgebra::{Translation3, UnitQuaternion, Vector3};
+use buoyancy_core::query::Query;
 use buoyancy_core::{Mesh, Method, Pose, Traversal, Water, mesh::primitives};
 use proptest::prelude::*;
 
@@ -60,7 +61,7 @@ proptest! {
             let pose = Pose::from_parts(Translation3::new(offset.0, gap - extreme, offset.1), rotation);
             for method in Method::ALL {
                 for traversal in [Traversal::Scan, Traversal::Hierarchy] {
-                    let b = mesh.buoyancy_with(&pose, &water, method, traversal).unwrap();
+                    let b = mesh.buoyancy(&pose, &water, Query::new(method).with_traversal(traversal)).unwrap();
                     let what = format!("{name}, {method}, {traversal:?}, gap {gap:e}, highest {highest}");
                     prop_assert!(b.submerged_volume >= 0.0, "{what}: volume {:e}", b.submerged_volume);
                     prop_assert!(b.force.y >= 0.0, "{what}: force {:?}", b.force);

@@ -8,6 +8,7 @@
 //! 10¹⁵ m gives the result it gives 10 m down (translated), within round-off of the body.
 
 use buoyancy_core::nalgebra::{Translation3, UnitQuaternion, Vector3};
+use buoyancy_core::query::{Pressure, Sea};
 use buoyancy_core::water::{AiryComponent, AiryWaves, GerstnerWaves, SurfaceFn, WaterSurface};
 use buoyancy_core::{Buoyancy, Mesh, Method, Pose, Water, mesh::primitives};
 
@@ -91,11 +92,19 @@ fn every_surface_under_waves() {
     ];
     for (name, surface) in surfaces {
         let near = mesh
-            .buoyancy_in_waves(&at_depth(10.0), &water, surface, 1.5)
+            .buoyancy(
+                &at_depth(10.0),
+                Sea::new(&water, surface, 1.5),
+                Method::ExactSurface,
+            )
             .unwrap();
         for depth in [1e9, 1e15] {
             let deep = mesh
-                .buoyancy_in_waves(&at_depth(depth), &water, surface, 1.5)
+                .buoyancy(
+                    &at_depth(depth),
+                    Sea::new(&water, surface, 1.5),
+                    Method::ExactSurface,
+                )
                 .unwrap();
             same_as_near(&deep, &near, depth, name);
         }
@@ -119,7 +128,11 @@ fn froude_krylov_far_down_is_the_still_water_buoyancy() {
     for depth in [1e3, 1e9, 1e15] {
         // The wave part of the pressure decays as e^{−k·d}: nothing left 1 km down.
         let deep = mesh
-            .buoyancy_froude_krylov(&at_depth(depth), &water, &airy, 1.5)
+            .buoyancy(
+                &at_depth(depth),
+                Sea::new(&water, &airy, 1.5).with_pressure(Pressure::FroudeKrylov),
+                Method::ExactSurface,
+            )
             .unwrap();
         same_as_near(&deep, &still, depth, "Froude–Krylov");
     }

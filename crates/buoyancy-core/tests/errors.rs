@@ -1,6 +1,7 @@
 //! Bad input gives a typed error naming the culprits, never a panic or a NaN; the quirks of
 //! real meshes (inward winding, zero-area triangles) are handled. Every mesh is built here.
 
+use buoyancy_core::query::Query;
 use std::collections::BTreeMap;
 
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
@@ -112,10 +113,18 @@ fn zero_area_triangles_are_accepted() {
     for method in Method::ALL {
         for traversal in Traversal::ALL {
             let b = mesh
-                .buoyancy_with(&pose, &Water::default(), method, traversal)
+                .buoyancy(
+                    &pose,
+                    &Water::default(),
+                    Query::new(method).with_traversal(traversal),
+                )
                 .unwrap();
             let expected = cube
-                .buoyancy_with(&pose, &Water::default(), method, traversal)
+                .buoyancy(
+                    &pose,
+                    &Water::default(),
+                    Query::new(method).with_traversal(traversal),
+                )
                 .unwrap();
             assert!(b.submerged_volume.is_finite() && b.submerged_volume > 0.0);
             assert!(
@@ -531,10 +540,18 @@ fn f32_matches_f64() {
             assert!(dc < 1e-4, "{method}, h = {h}: center off by {dc:e}");
             // In f32 too, the hierarchy classifies every triangle as the scan does.
             let scan = m32
-                .buoyancy_with(&p32, &Water::default(), method, Traversal::Scan)
+                .buoyancy(
+                    &p32,
+                    &Water::default(),
+                    Query::new(method).with_traversal(Traversal::Scan),
+                )
                 .unwrap();
             let walk = m32
-                .buoyancy_with(&p32, &Water::default(), method, Traversal::Hierarchy)
+                .buoyancy(
+                    &p32,
+                    &Water::default(),
+                    Query::new(method).with_traversal(Traversal::Hierarchy),
+                )
                 .unwrap();
             assert_eq!(
                 (scan.fully_submerged, scan.partially_submerged),

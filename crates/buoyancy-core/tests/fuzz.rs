@@ -6,6 +6,7 @@
 //! `Err` is checked to be one of the typed errors of its input.
 
 use buoyancy_core::nalgebra::{Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
+use buoyancy_core::query::{Pressure, Sea};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use buoyancy_core::{Buoyancy, Error, Mesh, Method, Pose, Water, mesh::primitives};
@@ -293,8 +294,8 @@ proptest! {
         let pose = pose_from(pose);
         let water = Water::default();
         let results = [
-            mesh.buoyancy_in_waves(&pose, &water, &waves, time),
-            mesh.buoyancy_froude_krylov(&pose, &water, &waves, time),
+            mesh.buoyancy(&pose, Sea::new(&water, &waves, time), Method::ExactSurface),
+            mesh.buoyancy(&pose, Sea::new(&water, &waves, time).with_pressure(Pressure::FroudeKrylov), Method::ExactSurface),
         ];
         for result in results {
             match result {

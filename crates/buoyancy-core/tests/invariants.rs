@@ -8,6 +8,7 @@
 mod common;
 
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
+use buoyancy_core::query::Query;
 use buoyancy_core::{Buoyancy, Mesh, Method, Pose, Traversal, Water, mesh::primitives};
 use common::{all_meshes, assert_close, assert_close_v, pose, pose_at_height, reference};
 use proptest::prelude::*;
@@ -140,7 +141,9 @@ fn check_wetted_area(name: &str, mesh: &Mesh<f64>, pose: &Pose<f64>, water: &Wat
     );
     for method in Method::ALL {
         for traversal in Traversal::ALL {
-            let b = mesh.buoyancy_with(pose, water, method, traversal).unwrap();
+            let b = mesh
+                .buoyancy(pose, water, Query::new(method).with_traversal(traversal))
+                .unwrap();
             let what = format!("{name}, {method}, {traversal:?}: wetted area");
             assert!(
                 b.wetted_area >= 0.0 && b.wetted_area <= total * (1.0 + 1e-12),
@@ -480,10 +483,18 @@ fn check_strategies(name: &str, mesh: &Mesh<f64>, pose: &Pose<f64>, water: &Wate
     let s = scales(mesh, water);
     for method in Method::ALL {
         let scan = mesh
-            .buoyancy_with(pose, water, method, Traversal::Scan)
+            .buoyancy(
+                pose,
+                water,
+                Query::new(method).with_traversal(Traversal::Scan),
+            )
             .unwrap();
         let walk = mesh
-            .buoyancy_with(pose, water, method, Traversal::Hierarchy)
+            .buoyancy(
+                pose,
+                water,
+                Query::new(method).with_traversal(Traversal::Hierarchy),
+            )
             .unwrap();
         assert_same(
             &format!("{name}, {method}, hierarchy vs scan"),
@@ -569,16 +580,23 @@ fn parallel_equals_serial() {
         let p = pose(Vector3::new(0.1, h, 0.2), [0.1 * i as f64, 0.3, 0.7]);
         for method in Method::ALL {
             for traversal in [Traversal::Scan, Traversal::Hierarchy] {
-                let serial = mesh.buoyancy_with(&p, &water, method, traversal).unwrap();
+                let serial = mesh
+                    .buoyancy(&p, &water, Query::new(method).with_traversal(traversal))
+                    .unwrap();
                 for _ in 0..2 {
                     let parallel = mesh
-                        .par_buoyancy_with(&p, &water, method, traversal)
+                        .buoyancy(
+                            &p,
+                            &water,
+                            Query::new(method).with_traversal(traversal).in_parallel(),
+                        )
                         .unwrap();
                     assert_eq!(parallel, serial, "{method}, {traversal:?}, h = {h}");
                 }
             }
             assert_eq!(
-                mesh.par_buoyancy(&p, &water, method).unwrap(),
+                mesh.buoyancy(&p, &water, Query::new(method).in_parallel())
+                    .unwrap(),
                 mesh.buoyancy(&p, &water, method).unwrap()
             );
         }

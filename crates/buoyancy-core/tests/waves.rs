@@ -4,6 +4,7 @@
 mod common;
 
 use buoyancy_core::nalgebra::{Point3, Translation3, UnitQuaternion, Vector3};
+use buoyancy_core::query::{Pressure, Query, Sea};
 use buoyancy_core::water::{AiryComponent, AiryWaves, CalmSurface, HeightGrid, SurfaceFn};
 use buoyancy_core::{Mesh, Method, Pose, Traversal, Water, mesh::primitives};
 use common::{all_meshes, assert_close, assert_close_v};
@@ -32,10 +33,18 @@ fn calm_water_is_exact_surface() {
                 0.1,
             );
             let waves = mesh
-                .buoyancy_in_waves(&p, &water, &CalmSurface, 1.5)
+                .buoyancy(
+                    &p,
+                    Sea::new(&water, &CalmSurface, 1.5),
+                    Method::ExactSurface,
+                )
                 .unwrap();
             let still = mesh
-                .buoyancy_with(&p, &water, Method::ExactSurface, Traversal::Scan)
+                .buoyancy(
+                    &p,
+                    &water,
+                    Query::new(Method::ExactSurface).with_traversal(Traversal::Scan),
+                )
                 .unwrap();
             let scale = 1e-12 * (1.0 + still.force.norm());
             assert!((waves.force - still.force).norm() <= scale, "{name} {k}");
@@ -90,7 +99,9 @@ fn a_plane_surface_gives_the_divergence_theorem() {
                 -0.3,
                 0.8,
             );
-            let w = mesh.buoyancy_in_waves(&p, &calm, &ramp, 0.0).unwrap();
+            let w = mesh
+                .buoyancy(&p, Sea::new(&calm, &ramp, 0.0), Method::ExactSurface)
+                .unwrap();
             let exact = mesh.buoyancy(&p, &tilted, Method::Exact).unwrap();
             let weight = calm.specific_weight();
             let expected = Vector3::new(-s, 1.0, 0.0) * (weight * exact.submerged_volume);
@@ -133,7 +144,9 @@ fn a_wall_sided_box_in_a_regular_wave() {
         let mut worst: f64 = 0.0;
         for step in 0..8 {
             let time = step as f64 * 0.37;
-            let got = b.buoyancy_in_waves(&p, &water, &waves, time).unwrap();
+            let got = b
+                .buoyancy(&p, Sea::new(&water, &waves, time), Method::ExactSurface)
+                .unwrap();
             let expected = weight * beam * length * draft
                 + weight
                     * beam
@@ -172,7 +185,9 @@ fn a_wall_sided_box_wetted_area_in_a_regular_wave() {
         let mut worst: f64 = 0.0;
         for step in 0..8 {
             let time = step as f64 * 0.37;
-            let got = b.buoyancy_in_waves(&p, &water, &waves, time).unwrap();
+            let got = b
+                .buoyancy(&p, Sea::new(&water, &waves, time), Method::ExactSurface)
+                .unwrap();
             let eta = |x: f64| amplitude * (k * x - omega * time + phase).cos();
             let sides = length * draft
                 + amplitude * (2.0 / k) * (k * length / 2.0).sin() * (phase - omega * time).cos();
@@ -232,15 +247,27 @@ fn froude_krylov_wets_the_hydrostatic_surface() {
                 0.1,
             );
             let time = 0.6 * k as f64;
-            let hydrostatic = mesh.buoyancy_in_waves(&p, &water, &sea, time).unwrap();
-            let fk = mesh.buoyancy_froude_krylov(&p, &water, &sea, time).unwrap();
+            let hydrostatic = mesh
+                .buoyancy(&p, Sea::new(&water, &sea, time), Method::ExactSurface)
+                .unwrap();
+            let fk = mesh
+                .buoyancy(
+                    &p,
+                    Sea::new(&water, &sea, time).with_pressure(Pressure::FroudeKrylov),
+                    Method::ExactSurface,
+                )
+                .unwrap();
             let what = format!("{name} {k}: wetted area");
             assert_close(&what, fk.wetted_area, hydrostatic.wetted_area, 1e-12, area);
             assert!(fk.wetted_area <= area * (1.0 + 1e-12), "{what}");
             wetted += usize::from(fk.wetted_area > 0.0 && fk.wetted_area < area);
             let still = mesh.buoyancy(&p, &water, Method::ExactSurface).unwrap();
             let fk_calm = mesh
-                .buoyancy_froude_krylov(&p, &water, &calm, time)
+                .buoyancy(
+                    &p,
+                    Sea::new(&water, &calm, time).with_pressure(Pressure::FroudeKrylov),
+                    Method::ExactSurface,
+                )
                 .unwrap();
             assert_close(&what, fk_calm.wetted_area, still.wetted_area, 1e-12, area);
         }
@@ -270,10 +297,18 @@ fn a_grid_of_a_plane_is_the_plane() {
     let ball = Mesh::new(v, t).unwrap();
     let p = pose(0.3, 0.2, -0.4, 0.2, 0.1, 0.0);
     let a = ball
-        .buoyancy_in_waves(&p, &Water::default(), &grid, 0.0)
+        .buoyancy(
+            &p,
+            Sea::new(&Water::default(), &grid, 0.0),
+            Method::ExactSurface,
+        )
         .unwrap();
     let b = ball
-        .buoyancy_in_waves(&p, &Water::default(), &ramp, 0.0)
+        .buoyancy(
+            &p,
+            Sea::new(&Water::default(), &ramp, 0.0),
+            Method::ExactSurface,
+        )
         .unwrap();
     assert!(
         (a.force - b.force).norm() < 1e-9 * b.force.norm(),
@@ -290,11 +325,18 @@ fn bad_times_and_surfaces_are_errors() {
     let w = Water::default();
     let p = Pose::identity();
     assert!(
-        cube.buoyancy_in_waves(&p, &w, &CalmSurface, f64::NAN)
-            .is_err()
+        cube.buoyancy(
+            &p,
+            Sea::new(&w, &CalmSurface, f64::NAN),
+            Method::ExactSurface
+        )
+        .is_err()
     );
     let nan = SurfaceFn(|_: &Point3<f64>, _: f64| f64::NAN);
-    assert!(cube.buoyancy_in_waves(&p, &w, &nan, 0.0).is_err());
+    assert!(
+        cube.buoyancy(&p, Sea::new(&w, &nan, 0.0), Method::ExactSurface)
+            .is_err()
+    );
 }
 
 /// Walking the hierarchy against the surface's bound changes nothing but round-off: the same
@@ -335,10 +377,18 @@ fn walking_within_the_bound_changes_nothing() {
                 -0.5,
             );
             let a = mesh
-                .buoyancy_in_waves(&p, &water, &sea, 0.7 * k as f64)
+                .buoyancy(
+                    &p,
+                    Sea::new(&water, &sea, 0.7 * k as f64),
+                    Method::ExactSurface,
+                )
                 .unwrap();
             let b = mesh
-                .buoyancy_in_waves(&p, &water, &unbounded, 0.7 * k as f64)
+                .buoyancy(
+                    &p,
+                    Sea::new(&water, &unbounded, 0.7 * k as f64),
+                    Method::ExactSurface,
+                )
                 .unwrap();
             let weight = water.specific_weight() * mesh.volume();
             assert!((a.force - b.force).norm() < 1e-12 * weight, "{name} {k}");
@@ -404,12 +454,22 @@ fn moving_body_and_wave_together_agree() {
             0.2,
             0.9,
         );
-        let reference = mesh.buoyancy_in_waves(&p, &water, &base, 1.1).unwrap();
+        let reference = mesh
+            .buoyancy(&p, Sea::new(&water, &base, 1.1), Method::ExactSurface)
+            .unwrap();
         let translated = mesh
-            .buoyancy_in_waves(&moved, &water, &moved_wave, 1.1)
+            .buoyancy(
+                &moved,
+                Sea::new(&water, &moved_wave, 1.1),
+                Method::ExactSurface,
+            )
             .unwrap();
         let later = mesh
-            .buoyancy_in_waves(&p, &water, &delayed_wave, 1.1 + delay)
+            .buoyancy(
+                &p,
+                Sea::new(&water, &delayed_wave, 1.1 + delay),
+                Method::ExactSurface,
+            )
             .unwrap();
         let scale = 1e-9 * (1.0 + reference.force.norm());
         assert!(
@@ -441,7 +501,9 @@ fn long_waves_are_still_water_at_the_local_level() {
         let level = amplitude * phase.cos();
         let still = Water::new(1000.0, 9.81, Vector3::y(), level).unwrap();
         let p = pose(0.0, -0.3 * r, 0.0, 0.2, 0.5, 0.1);
-        let got = mesh.buoyancy_in_waves(&p, &water, &waves, 0.0).unwrap();
+        let got = mesh
+            .buoyancy(&p, Sea::new(&water, &waves, 0.0), Method::ExactSurface)
+            .unwrap();
         let expected = mesh.buoyancy(&p, &still, Method::ExactSurface).unwrap();
         let k_size = 2.0 * std::f64::consts::PI / wavelength * r;
         let tolerance = 10.0 * k_size * water.specific_weight() * mesh.volume();
@@ -472,7 +534,11 @@ fn a_submerged_ball_gets_the_divergence_theorem() {
         let (v, t) = primitives::uv_sphere::<f64>(1.0, slices, stacks).unwrap();
         let ball = Mesh::new(v, t).unwrap();
         let b = ball
-            .buoyancy_in_waves(&pose(0.0, -5.0, 0.0, 0.0, 0.0, 0.0), &water, &waves, 0.0)
+            .buoyancy(
+                &pose(0.0, -5.0, 0.0, 0.0, 0.0, 0.0),
+                Sea::new(&water, &waves, 0.0),
+                Method::ExactSurface,
+            )
             .unwrap();
         assert!(
             (b.force.y / (weight * ball.volume()) - 1.0).abs() < 2e-3,
@@ -536,7 +602,7 @@ mod random_seas {
             }])
             .unwrap();
             for surface in [&sea as &dyn buoyancy_core::water::WaterSurface<f64>, &gerstner] {
-                let b = mesh.buoyancy_in_waves(&p, &water, surface, time).unwrap();
+                let b = mesh.buoyancy(&p, Sea::new(&water, surface, time), Method::ExactSurface).unwrap();
                 let numbers = [b.submerged_volume]
                     .into_iter()
                     .chain(b.center_of_buoyancy.iter().copied())
@@ -547,8 +613,8 @@ mod random_seas {
                 }
             }
             if hs == 0.0 {
-                let calm = mesh.buoyancy_in_waves(&p, &water, &CalmSurface, time).unwrap();
-                prop_assert_eq!(mesh.buoyancy_in_waves(&p, &water, &sea, time).unwrap(), calm);
+                let calm = mesh.buoyancy(&p, Sea::new(&water, &CalmSurface, time), Method::ExactSurface).unwrap();
+                prop_assert_eq!(mesh.buoyancy(&p, Sea::new(&water, &sea, time), Method::ExactSurface).unwrap(), calm);
             }
         }
     }
@@ -592,7 +658,11 @@ mod froude_krylov {
             let ball = Mesh::new(v, t).unwrap();
             let p = pose(center.x, center.y, center.z, 0.0, 0.0, 0.0);
             let b = ball
-                .buoyancy_froude_krylov(&p, &water, &waves, 1.3)
+                .buoyancy(
+                    &p,
+                    Sea::new(&water, &waves, 1.3).with_pressure(Pressure::FroudeKrylov),
+                    Method::ExactSurface,
+                )
                 .unwrap();
             let expected = Vector3::y() * water.specific_weight() * ball.volume()
                 + acceleration * (water.density() * ball.volume());
@@ -628,7 +698,13 @@ mod froude_krylov {
         let mut worst: f64 = 0.0;
         for step in 0..8 {
             let time = step as f64 * 0.29;
-            let got = b.buoyancy_froude_krylov(&p, &water, &waves, time).unwrap();
+            let got = b
+                .buoyancy(
+                    &p,
+                    Sea::new(&water, &waves, time).with_pressure(Pressure::FroudeKrylov),
+                    Method::ExactSurface,
+                )
+                .unwrap();
             let wave = amplitude
                 * (-k * draft).exp()
                 * (2.0 / k)

@@ -12,8 +12,9 @@ use crate::arrays;
 use crate::convert;
 use crate::errors::{arg_error, to_py, type_error};
 use crate::format::g;
-use crate::pressure::Pressure;
+use crate::pressure;
 use crate::sea_state::{SeaArguments, SeaOrigin};
+use buoyancy_core::query::Pressure;
 
 type V3 = (f64, f64, f64);
 
@@ -239,7 +240,7 @@ impl PyAiryWave {
 /// >>> hull = buoyancy.shapes.cube().scaled((4, 1, 1))
 /// >>> b = hull.buoyancy(position=(0, -0.2, 0), water=buoyancy.Water(waves=sea), time=1.5)
 /// >>> b.method
-/// 'exact_surface'
+/// 'exact'
 ///
 /// Under the Froude–Krylov pressure a ball of 0.5 m radius 3 m under a 10 m swell feels, besides
 /// ``ρ g V`` up, ``ρ V`` times the water's acceleration at its center, whose component along x
@@ -300,7 +301,7 @@ impl PyWaves {
         args: SeaArguments<'_, '_>,
         pressure: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
-        let pressure = Pressure::parse(pressure)?;
+        let pressure = pressure::parse(pressure)?;
         let (inner, origin) = SeaOrigin::draw(py, args)?;
         Ok(PyWaves {
             inner,
@@ -327,7 +328,7 @@ impl PyWaves {
             Some(d) => Some(convert::real(d, "depth")?),
             None => None,
         };
-        let pressure = Pressure::parse(pressure)?;
+        let pressure = pressure::parse(pressure)?;
         AiryWaves::new(parsed, depth)
             .map(|inner| PyWaves {
                 inner,
@@ -515,7 +516,7 @@ impl PyWaves {
     }
 
     fn __repr__(&self) -> String {
-        let pressure = self.pressure.repr_argument();
+        let pressure = pressure::repr_argument(self.pressure);
         if let Some(origin) = &self.origin {
             return origin.repr(&pressure);
         }

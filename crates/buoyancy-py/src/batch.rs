@@ -2,7 +2,8 @@
 //! (a Python surface function takes it back around each call).
 
 use buoyancy_core::nalgebra::Point3;
-use buoyancy_core::{Mesh, Method, Pose, Traversal, Water};
+use buoyancy_core::query::Query;
+use buoyancy_core::{Mesh, Pose, Water};
 use pyo3::prelude::*;
 use rayon::prelude::*;
 
@@ -81,8 +82,7 @@ pub struct Batch<'a> {
     pub waves: Option<&'a WaterWaves>,
     /// The time of each pose, s.
     pub times: Vec<f64>,
-    pub method: Method,
-    pub traversal: Traversal,
+    pub query: Query,
     pub about: About,
 }
 
@@ -99,9 +99,11 @@ impl Batch<'_> {
                     let b = match self.waves {
                         None => self
                             .mesh
-                            .buoyancy_with(pose, &self.water, self.method, self.traversal)
+                            .buoyancy(pose, &self.water, self.query)
                             .map_err(Failure::Core),
-                        Some(waves) => waves.buoyancy(self.mesh, pose, &self.water, self.times[i]),
+                        Some(waves) => {
+                            waves.buoyancy(self.mesh, pose, &self.water, self.times[i], self.query)
+                        }
                     }
                     .map_err(|f| (i, f))?;
                     let b = match &self.about {

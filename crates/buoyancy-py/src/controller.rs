@@ -26,12 +26,12 @@ use crate::float_report::PyFloatReport;
 use crate::gerstner::PyGerstnerWaves;
 use crate::height_grid::PyHeightGrid;
 use crate::mesh::PyMesh;
-use crate::pressure::Pressure;
 use crate::stability::{self, PyEquilibrium};
 use crate::step_inputs::{Columns, Input};
 use crate::surface_function::{FunctionFailure, SurfaceFunction};
 use crate::water::PyWater;
 use crate::water_waves::Failure;
+use buoyancy_core::query::Pressure;
 
 /// One part of a body as given: the Python mesh (kept for `parts`), and its shape → body pose.
 struct GivenPart {
@@ -112,18 +112,19 @@ impl WaterSurface<f64> for FunctionSurface {
     }
 }
 
-/// The controller's water with waves: the `Water` given, the core's surface of its waves, and
-/// that surface again when it is a Python callable (whose failures `step` raises).
-struct Sea {
+/// The controller's water with waves: the `Water` given, the core's surface of its waves and
+/// their pressure, and that surface again when it is a Python callable (whose failures `step`
+/// raises).
+struct ControllerWaves {
     water: Py<PyWater>,
     surface: SharedSurface,
+    pressure: Pressure,
     function: Option<Arc<FunctionSurface>>,
 }
 
 /// The controller's `water`: its still plane, and its waves as the core's surface (`None` for
-/// still water). `Waves` of the Froude–Krylov pressure are a `ValueError`: the controller
-/// integrates the hydrostatic pressure of the waves.
-fn controller_water(water: &Bound<'_, PyWater>) -> PyResult<(Water<f64>, Option<Sea>)> {
+/// still water) with their pressure.
+fn controller_water(water: &Bound<'_, PyWater>) -> PyResult<(Water<f64>, Option<ControllerWaves>)> {
     let py = water.py();
     let inner = water.get().inner;
     let Some(waves) = &water.get().waves else {
@@ -131,16 +132,12 @@ fn controller_water(water: &Bound<'_, PyWater>) -> PyResult<(Water<f64>, Option<
     };
     let given = waves.given(py);
     let mut function = None;
+    let mut pressure = Pressure::Hydrostatic;
     let surface: SharedSurface = if let Ok(wave) = given.cast::<PyAiryWave>() {
         Arc::new(PyWaves::single(wave.get())?.inner)
     } else if let Ok(waves) = given.cast::<PyWaves>() {
         let waves = waves.get();
-        if waves.pressure == Pressure::FroudeKrylov {
-            return Err(arg_error(
-                "water",
-                "the controller integrates the hydrostatic pressure of the waves over each body's wetted surface, and these Waves ask for the Froude–Krylov pressure: give Waves(..., pressure='hydrostatic')",
-            ));
-        }
+        pressure = waves.pressure;
         Arc::new(waves.inner.clone())
     } else if let Ok(waves) = given.cast::<PyGerstnerWaves>() {
         Arc::new(waves.get().inner.clone())
@@ -157,9 +154,10 @@ fn controller_water(water: &Bound<'_, PyWater>) -> PyResult<(Water<f64>, Option<
     };
     Ok((
         inner,
-        Some(Sea {
+        Some(ControllerWaves {
             water: water.clone().unbind(),
             surface,
+            pressure,
             function,
         }),
     ))
@@ -421,9 +419,11 @@ fn core_parts(py: Python<'_>, parts: &mut [GivenPart], bodies: &[Vec<GivenPart>]
 ///     such as ``Waves.jonswap(...)``, :class:`GerstnerWaves`, a :class:`HeightGrid` or a
 ///     callable ``f(points, t)``). The bodies then float on the surface at the controller's
 ///     :attr:`time` (s), which every :meth:`step` advances by its ``dt``: the buoyancy is the
-///     hydrostatic pressure ``ρ g (η − h)`` integrated exactly over each part's wetted surface
-///     (``"exact_surface"``; ``method`` is for still water, and ``Waves`` of the Froude–Krylov
-///     pressure are a ``ValueError``), and the damping is taken relative to the water's
+///     pressure of the waves integrated exactly over each part's wetted surface: the
+///     hydrostatic ``ρ g (η − h)``, or under ``Waves`` of ``pressure="froude_krylov"`` the linear
+///     Froude–Krylov pressure (``method`` holds there too: ``"exact"`` and ``"exact_surface"``
+///     integrate exactly; under a method that assumes a flat surface a body gets no force and
+///     its report's outcome is ``"unsupported"``), and the damping is taken relative to the water's
 ///     velocity at the body's center of mass: the orbital velocity of Airy waves (and
 ///     ``Waves``); Gerstner waves, height grids and callables move no water. The waves are the
 ///     controller's, shared by every body: a body's own ``water`` must be still.
@@ -578,7 +578,7 @@ struct ControllerState {
     states: Vec<BodyState>,
     commands: Vec<Command>,
     /// The water given, with its waves' surface, when it has waves.
-    sea: Option<Sea>,
+    sea: Option<ControllerWaves>,
 }
 
 impl ControllerState {
@@ -596,6 +596,10 @@ impl ControllerState {
         self.inner.settings_mut().water = inner;
         self.inner
             .set_surface(sea.as_ref().map(|sea| sea.surface.clone()));
+        self.inner.set_pressure(
+            sea.as_ref()
+                .map_or(Pressure::Hydrostatic, |sea| sea.pressure),
+        );
         self.sea = sea;
         Ok(())
     }

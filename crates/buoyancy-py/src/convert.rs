@@ -441,3 +441,13 @@ pub fn matrix4(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Matrix4<f64>> {
     finite(&a.values, name)?;
     Ok(Matrix4::from_row_slice(&a.values))
 }
+
+/// The `method` and `traversal` arguments as the core's query (`exact` and `auto` when absent or
+/// `None`); whether the water allows them is the core's to say.
+pub fn query(
+    method: Option<&Bound<'_, PyAny>>,
+    traversal: Option<&Bound<'_, PyAny>>,
+) -> PyResult<buoyancy_core::query::Query> {
+    Ok(buoyancy_core::query::Query::new(self::method(method)?)
+        .with_traversal(self::traversal(traversal)?))
+}

@@ -28,17 +28,19 @@ pub fn outcome_name(outcome: Outcome) -> &'static str {
         Outcome::Applied => "applied",
         Outcome::Inactive => "inactive",
         Outcome::NotFinite => "not_finite",
+        Outcome::Unsupported => "unsupported",
         // `Outcome` is non-exhaustive: a newer core's outcome this binding does not know yet.
         _ => "unknown",
     }
 }
 
 /// The outcomes by name, in the order of the stub's `Literal`.
-const OUTCOMES: [(&str, Outcome); 4] = [
+const OUTCOMES: [(&str, Outcome); 5] = [
     ("not_evaluated", Outcome::NotEvaluated),
     ("applied", Outcome::Applied),
     ("inactive", Outcome::Inactive),
     ("not_finite", Outcome::NotFinite),
+    ("unsupported", Outcome::Unsupported),
 ];
 
 fn parse_outcome(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Outcome> {
@@ -88,8 +90,10 @@ fn parse_outcome(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Outcome> {
 ///     What became of the body at the last step: ``"not_evaluated"`` (added, not stepped
 ///     since), ``"applied"`` (the forces above are the controller's share of the body's force),
 ///     ``"inactive"`` (not dynamic, or disabled: nothing computed, the share it had left as it
-///     is) or ``"not_finite"`` (a pose, velocity or result was not finite: no force, the share
-///     taken back). Unless ``"applied"``, the forces are zero and the center of buoyancy is the
+///     is), ``"not_finite"`` (a pose, velocity or result was not finite: no force, the share
+///     taken back) or ``"unsupported"`` (the query was refused: a method that assumes a flat
+///     surface under waves, or the Froude–Krylov pressure under waves that are not Airy waves).
+///     Unless ``"applied"``, the forces are zero and the center of buoyancy is the
 ///     center of mass.
 /// force, torque : ndarray, shape (3,)
 ///     ``buoyancy_force + damping_force`` and ``buoyancy_torque + damping_torque``: what the
@@ -189,7 +193,7 @@ impl PyFloatReport {
     fn wetted_area(&self) -> f64 {
         self.inner.wetted_area
     }
-    /// ``"not_evaluated"``, ``"applied"``, ``"inactive"`` or ``"not_finite"``.
+    /// ``"not_evaluated"``, ``"applied"``, ``"inactive"``, ``"not_finite"`` or ``"unsupported"``.
     #[getter]
     fn outcome(&self) -> &'static str {
         outcome_name(self.inner.outcome)

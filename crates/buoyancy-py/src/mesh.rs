@@ -21,7 +21,7 @@ use crate::result::{PyBuoyancy, PyBuoyancyBatch, Row};
 use crate::stability::{self, PyEquilibrium, PyGzCurve, PyHydrostaticTable};
 use crate::threads;
 use crate::water::PyWater;
-use crate::water_waves::{Failure, WaterWaves, method_and_traversal};
+use crate::water_waves::{Failure, WaterWaves};
 
 /// Vertices and triangles, as `buoyancy_core::Mesh::new` takes them.
 pub type Shape = (Vec<Point3<f64>>, Vec<[u32; 3]>);
@@ -519,15 +519,16 @@ impl PyMesh {
     /// method : str
     ///     ``"fast"``, ``"improved"``, ``"exact"`` (default), ``"fast_surface"`` or
     ///     ``"exact_surface"``, in any case, with ``_``, ``-`` or nothing between the words
-    ///     (``"ExactSurface"``, the Rust name, works too). On a water with waves only
-    ///     ``"exact_surface"``, the default there (the others assume a flat surface: a
-    ///     ``ValueError``).
+    ///     (``"ExactSurface"``, the Rust name, works too). On a water with waves ``"exact"`` and
+    ///     ``"exact_surface"`` are the same exact integral of the pressure; the others assume a
+    ///     flat surface (a ``ValueError``).
     /// traversal : str
     ///     ``"auto"`` (default), ``"scan"`` or ``"hierarchy"``: visit every triangle, or only the
     ///     nodes of the mesh's bounding-volume hierarchy that the surface crosses.
     ///     ``"auto"`` takes the hierarchy from 128 triangles up.
-    ///     All give the same result up to round-off. On waves every triangle is visited
-    ///     (``"hierarchy"`` is a ``ValueError``).
+    ///     All give the same result up to round-off. On waves the hierarchy is walked against
+    ///     the layer the surface lies in (``"scan"``: every vertex evaluated, every triangle on
+    ///     its own); under the Froude–Krylov pressure every triangle is integrated.
     /// about : array_like, shape (3,), optional
     ///     World point the torque is taken about; default the body's center of mass (the mesh
     ///     centroid moved by the pose).
@@ -576,7 +577,7 @@ impl PyMesh {
         time: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyBuoyancy> {
         let (water, waves) = PyMesh::water(water)?;
-        let (method, traversal) = method_and_traversal(method, traversal, waves.is_some())?;
+        let query = convert::query(method, traversal)?;
         let pose = PyMesh::pose(position, rotation)?;
         let about = match given(about) {
             Some(a) => Some(Point3::from(convert::vector3(a, "about")?)),
@@ -587,10 +588,8 @@ impl PyMesh {
         // A Python surface function takes the interpreter lock back around its call.
         let b = detach_if_large(py, mesh.triangle_count(), move || {
             let b = match waves {
-                None => mesh
-                    .buoyancy_with(&pose, &water, method, traversal)
-                    .map_err(Failure::Core)?,
-                Some(waves) => waves.buoyancy(mesh, &pose, &water, time)?,
+                None => mesh.buoyancy(&pose, &water, query).map_err(Failure::Core)?,
+                Some(waves) => waves.buoyancy(mesh, &pose, &water, time, query)?,
             };
             Ok::<_, Failure>(match about {
                 Some(q) => b.about(&q),
@@ -600,7 +599,7 @@ impl PyMesh {
         .map_err(|f| f.into_py(None))?;
         Ok(PyBuoyancy {
             row: Row::new(&b),
-            method,
+            method: query.method(),
         })
     }
 
@@ -668,7 +667,7 @@ impl PyMesh {
         times: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyBuoyancyBatch> {
         let (water, waves) = PyMesh::water(water)?;
-        let (method, traversal) = method_and_traversal(method, traversal, waves.is_some())?;
+        let query = convert::query(method, traversal)?;
         let translations = convert::rows3(positions, "positions")?;
         let k = translations.len();
         let rotations = match given(rotations) {
@@ -699,14 +698,17 @@ impl PyMesh {
             water,
             waves,
             times,
-            method,
-            traversal,
+            query,
             about,
         };
         let rows = py
             .detach(|| batch.run(pool.as_deref()))
-            .map_err(|(i, f)| f.into_py(Some(&format!("pose {i}"))))?;
-        Ok(PyBuoyancyBatch::new(py, rows, method))
+            .map_err(|(i, f)| match f {
+                // The query itself, refused for every pose alike: named by its argument alone.
+                f @ Failure::Core(Error::Unsupported { .. }) => f.into_py(None),
+                f => f.into_py(Some(&format!("pose {i}"))),
+            })?;
+        Ok(PyBuoyancyBatch::new(py, rows, query.method()))
     }
 
     /// The hydrodynamic damping of the mesh at one pose and velocity: pressure drag on the wetted

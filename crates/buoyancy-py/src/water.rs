@@ -40,8 +40,8 @@ type WaterArgs<'py> = (f64, f64, f64, (f64, f64, f64), Option<Bound<'py, PyAny>>
 ///
 /// On waves, :meth:`Mesh.buoyancy` integrates the hydrostatic pressure ``ρ g (η − h)`` (``h``
 /// the height above the still plane) over the wetted surface, which is cut exactly where the
-/// depth, interpolated linearly between the vertices, is zero: the method ``"exact_surface"``
-/// (the default there; the other methods assume a flat surface). Under :class:`Waves` of
+/// depth, interpolated linearly between the vertices, is zero: the methods ``"exact"`` (the
+/// default) and ``"exact_surface"`` alike (the other methods assume a flat surface). Under :class:`Waves` of
 /// ``pressure="froude_krylov"`` it integrates the linear Froude–Krylov pressure instead, whose
 /// wave part decays with depth (see :class:`Waves`).
 ///

@@ -2,18 +2,17 @@
 //! and the evaluations on them (buoyancy, elevations), whose failures name what failed.
 
 use buoyancy_core::nalgebra::Point3;
+use buoyancy_core::query::{Pressure, Query, Sea};
 use buoyancy_core::water::{AiryComponent, AiryWaves, BREAKING_STEEPNESS, WaterSurface};
-use buoyancy_core::{Buoyancy, Error, Mesh, Method, Pose, Traversal, Water};
+use buoyancy_core::{Buoyancy, Error, Mesh, Pose, Water};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyType;
 
 use crate::airy::{PyAiryWave, PyWaves};
-use crate::convert;
-use crate::errors::{arg_error, to_py, type_error, warn_user};
+use crate::errors::{to_py, type_error, warn_user};
 use crate::gerstner::PyGerstnerWaves;
 use crate::height_grid::PyHeightGrid;
-use crate::pressure::Pressure;
 use crate::surface_function::{FunctionFailure, SurfaceFunction};
 
 /// What the `waves` argument of `Water` accepts, for error messages.
@@ -176,27 +175,37 @@ impl WaterWaves {
         }
     }
 
-    /// The buoyancy of `mesh` at `pose` in `water` under these waves at `time` (s): the core's
-    /// `Mesh::buoyancy_froude_krylov` for `Waves` of the Froude–Krylov pressure, else its
-    /// `Mesh::buoyancy_in_waves` (the hydrostatic pressure of the waves).
+    /// The pressure of these waves: that of `Waves`, the hydrostatic one for other surfaces.
+    fn pressure(&self) -> Pressure {
+        match &self.surface {
+            Surface::Airy(waves) => waves.pressure,
+            _ => Pressure::Hydrostatic,
+        }
+    }
+
+    /// The buoyancy of `mesh` at `pose` in `water` under these waves at `time` (s), computed as
+    /// `query` says: the core's `Mesh::buoyancy` under a `Sea` of these waves and their
+    /// pressure, after the warnings of the sampling and (for the hydrostatic pressure) the
+    /// depth.
     pub fn buoyancy(
         &self,
         mesh: &Mesh<f64>,
         pose: &Pose<f64>,
         water: &Water<f64>,
         time: f64,
+        query: Query,
     ) -> Result<Buoyancy<f64>, Failure> {
         self.check_sampling(mesh)?;
-        if let Surface::Airy(waves) = &self.surface
-            && waves.pressure == Pressure::FroudeKrylov
-        {
-            return mesh
-                .buoyancy_froude_krylov(pose, water, &waves.inner, time)
-                .map_err(Failure::Core);
+        let pressure = self.pressure();
+        if pressure == Pressure::Hydrostatic {
+            self.check_depth(mesh, pose, water)?;
         }
-        self.check_depth(mesh, pose, water)?;
         self.on_surface(water, |surface| {
-            mesh.buoyancy_in_waves(pose, water, surface, time)
+            mesh.buoyancy(
+                pose,
+                Sea::new(water, surface, time).with_pressure(pressure),
+                query,
+            )
         })
     }
 
@@ -289,38 +298,4 @@ impl WaterWaves {
         })?;
         Ok(elevations)
     }
-}
-
-/// The method and traversal of a query in water with waves (`on_waves`) or without: on waves
-/// only Exact Surface integrates the pressure (the others assume a flat surface), the default
-/// there, and every triangle is visited (the hierarchy's sums assume a flat surface).
-pub fn method_and_traversal(
-    method: Option<&Bound<'_, PyAny>>,
-    traversal: Option<&Bound<'_, PyAny>>,
-    on_waves: bool,
-) -> PyResult<(Method, Traversal)> {
-    let traversal = convert::traversal(traversal)?;
-    if !on_waves {
-        return Ok((convert::method(method)?, traversal));
-    }
-    let method = match convert::given(method) {
-        Some(_) => convert::method(method)?,
-        None => Method::ExactSurface,
-    };
-    if method != Method::ExactSurface {
-        return Err(arg_error(
-            "method",
-            format!(
-                "'{}' assumes a flat water surface, and the water has waves: on waves only 'exact_surface' integrates the pressure (the default there)",
-                method.name()
-            ),
-        ));
-    }
-    if traversal == Traversal::Hierarchy {
-        return Err(arg_error(
-            "traversal",
-            "the water has waves, and on waves every triangle is visited (the hierarchy's sums assume a flat surface): pass 'auto' or 'scan'",
-        ));
-    }
-    Ok((method, traversal))
 }

@@ -7,6 +7,7 @@ use buoyancy_core::controller::{
     Rest, Settings, SharedSurface,
 };
 use buoyancy_core::nalgebra::Matrix3;
+use buoyancy_core::query::Pressure;
 use buoyancy_core::{DampingCoefficients, Mesh, Method, Pose, Water};
 use rapier3d::math::Vector;
 use rapier3d::prelude::{ColliderSet, RigidBody, RigidBodyHandle, RigidBodySet, RigidBodyType};
@@ -118,6 +119,17 @@ impl FloatingBodies {
     /// with `None`. Its time advances with every [`apply`](Self::apply) by the step's `dt`.
     pub fn set_surface(&mut self, surface: Option<SharedSurface>) {
         self.controller.set_surface(surface);
+    }
+    /// The pressure of the surface's waves (see the core's
+    /// [`Controller::pressure`](buoyancy_core::controller::Controller::pressure)): hydrostatic
+    /// by default.
+    pub fn pressure(&self) -> Pressure {
+        self.controller.pressure()
+    }
+    /// Sets the pressure of the surface's waves: [`Pressure::FroudeKrylov`] for Airy waves
+    /// whose wave part decays with depth.
+    pub fn set_pressure(&mut self, pressure: Pressure) {
+        self.controller.set_pressure(pressure);
     }
     /// The surface's time, s.
     pub fn time(&self) -> f64 {

@@ -9,14 +9,17 @@ use super::semi_implicit::{GeneralizedMass, implicit_damping, overshoots, semi_i
 use super::settings::Settings;
 use super::state::{BodyState, Motion};
 use super::wrench::Wrench;
+use crate::Error;
 use crate::damping::{add_block, angular_damping, angular_damping_stiffness};
+use crate::query::{Pressure, Sea};
 use crate::water::WaterSurface;
 
 /// A moving free surface at the time of a step.
 #[derive(Clone, Copy)]
-pub(crate) struct Sea<'a> {
+pub(crate) struct SurfaceAt<'a> {
     pub surface: &'a (dyn WaterSurface<f64> + Send),
     pub time: f64,
+    pub pressure: Pressure,
 }
 
 /// What evaluating one body at one step gives.
@@ -26,6 +29,9 @@ pub(crate) enum Evaluation {
     Inactive,
     /// A pose, velocity or result was not finite: its share becomes zero.
     NotFinite,
+    /// The query was refused (a method that assumes a flat surface under waves, the
+    /// Froude–Krylov pressure on a surface that is not Airy waves): its share becomes zero.
+    Unsupported,
     /// Its share becomes this force and torque (world frame, the torque about the center of
     /// mass); `report` says what was computed.
     Floating {
@@ -44,6 +50,9 @@ impl Evaluation {
             Evaluation::NotFinite => {
                 FloatReport::without_forces(center_of_mass, Outcome::NotFinite)
             }
+            Evaluation::Unsupported => {
+                FloatReport::without_forces(center_of_mass, Outcome::Unsupported)
+            }
             Evaluation::Floating { report, .. } => *report,
         }
     }
@@ -55,7 +64,7 @@ pub(crate) fn evaluate(
     body: &FloatingBody,
     state: &BodyState,
     settings: &Settings,
-    sea: Option<Sea>,
+    waves: Option<SurfaceAt>,
     dt: f64,
 ) -> Evaluation {
     if state.motion != Motion::Dynamic {
@@ -64,10 +73,11 @@ pub(crate) fn evaluate(
     // The damping relative to the water: its current, plus the waves' orbital velocity at the
     // center of mass.
     let mut settings = *settings;
-    if let Some(sea) = sea
+    if let Some(waves) = waves
         && let Some(orbital) =
-            sea.surface
-                .water_velocity(&settings.water, &state.center_of_mass, sea.time)
+            waves
+                .surface
+                .water_velocity(&settings.water, &state.center_of_mass, waves.time)
     {
         let current = settings.damping.current() + orbital;
         match settings.damping.with_current(current) {
@@ -76,8 +86,10 @@ pub(crate) fn evaluate(
         }
     }
     let settings = &settings;
-    let Some(mut report) = sum_parts(body, state, settings, sea) else {
-        return Evaluation::NotFinite;
+    let mut report = match sum_parts(body, state, settings, waves) {
+        Ok(report) => report,
+        Err(Outcome::Unsupported) => return Evaluation::Unsupported,
+        Err(_) => return Evaluation::NotFinite,
     };
     let water = &settings.water;
     let gravity = -water.normal().into_inner() * (water.gravity() * state.gravity_scale);
@@ -176,14 +188,15 @@ fn damping_stiffness(
 /// The body's buoyancy and (explicit) damping: the sums over its parts, torques about the
 /// world center of mass, the pressure drag of each part (over its reduced copy if it has one)
 /// and the angular damping of the whole
-/// body ([`angular_damping`] with the parts' total wetted fraction and volume). `None` when the
-/// core rejects a pose or velocity (not finite).
+/// body ([`angular_damping`] with the parts' total wetted fraction and volume). The error is
+/// [`Outcome::Unsupported`] when the core refuses the query, [`Outcome::NotFinite`] when it
+/// rejects a pose or velocity (not finite).
 fn sum_parts(
     body: &FloatingBody,
     state: &BodyState,
     settings: &Settings,
-    sea: Option<Sea>,
-) -> Option<FloatReport> {
+    waves: Option<SurfaceAt>,
+) -> Result<FloatReport, Outcome> {
     let Settings {
         water,
         method,
@@ -199,13 +212,17 @@ fn sum_parts(
     let mut weighted_center = Vector3::zeros();
     for (part, reduced) in body.parts.iter().zip(&body.reduced) {
         let pose = state.pose * part.shape_to_body;
-        let buoyancy = match sea {
-            Some(sea) => part
-                .mesh
-                .buoyancy_in_waves(&pose, water, sea.surface, sea.time),
-            None => part.mesh.buoyancy(&pose, water, *method),
-        }
-        .ok()?;
+        let sea = match waves {
+            Some(waves) => Sea::new(water, waves.surface, waves.time).with_pressure(waves.pressure),
+            None => Sea::calm(water),
+        };
+        let buoyancy = part
+            .mesh
+            .buoyancy(&pose, sea, *method)
+            .map_err(|e| match e {
+                Error::Unsupported { .. } => Outcome::Unsupported,
+                _ => Outcome::NotFinite,
+            })?;
         // The core takes the velocity of the mesh's own centroid.
         let centroid_velocity = velocity + omega.cross(&(buoyancy.torque_point - center_of_mass));
         let drag = match reduced {
@@ -221,7 +238,7 @@ fn sum_parts(
                 .mesh
                 .damping(&pose, &centroid_velocity, &omega, water, damping),
         }
-        .ok()?;
+        .map_err(|_| Outcome::NotFinite)?;
         report.submerged_volume += buoyancy.submerged_volume;
         weighted_center += buoyancy.center_of_buoyancy.coords * buoyancy.submerged_volume;
         report.buoyancy_force += buoyancy.force;
@@ -245,7 +262,7 @@ fn sum_parts(
     } else {
         water.project(&center_of_mass)
     };
-    Some(report)
+    Ok(report)
 }
 
 #[cfg(test)]

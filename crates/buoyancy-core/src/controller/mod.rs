@@ -100,10 +100,13 @@
 //!
 //! # Waves
 //! With a moving free surface ([`Controller::set_surface`], any [`WaterSurface`]), the buoyancy
-//! is the hydrostatic pressure of the waves integrated over each part's wetted surface
-//! ([`Mesh::buoyancy_in_waves`](crate::Mesh::buoyancy_in_waves); the method of the settings is
-//! for still water), at the controller's [`time`](Controller::time), which every step advances
-//! by its `dt`. The damping is taken relative to the water: its current plus the surface's
+//! is the pressure of the waves ([`Controller::pressure`]: hydrostatic by default, or
+//! Froude–Krylov) integrated over each part's wetted surface by
+//! [`Mesh::buoyancy`](crate::Mesh::buoyancy) under a [`Sea`](crate::query::Sea), at the
+//! controller's [`time`](Controller::time), which every step advances by its `dt`. The method of
+//! the settings holds there too: Exact (the default) and Exact Surface integrate the pressure
+//! exactly; a method that assumes a flat surface is refused, and the body's report says
+//! [`Outcome::Unsupported`]. The damping is taken relative to the water: its current plus the surface's
 //! [`water_velocity`](WaterSurface::water_velocity) (the orbital velocity of Airy waves) at the
 //! body's center of mass, one velocity for the whole body (a body small against the
 //! wavelength).
@@ -167,11 +170,12 @@ pub use settings::{BodyOptions, DampingResolution, Settings};
 pub use state::{BodyState, Command, Motion};
 
 use body::FloatingBody;
-use evaluation::{Evaluation, Sea, evaluate};
+use evaluation::{Evaluation, SurfaceAt, evaluate};
 use last_evaluation::LastEvaluation;
 
 use crate::Error;
 use crate::mesh::ReducedMesh;
+use crate::query::Pressure;
 use crate::water::WaterSurface;
 
 /// A free surface shared with the controller (see [`Controller::set_surface`]): any
@@ -187,6 +191,7 @@ pub struct Controller {
     bodies: Vec<FloatingBody>,
     /// The moving free surface, if any, and its time.
     surface: Option<SharedSurface>,
+    pressure: Pressure,
     time: f64,
     /// The damping resolution of the bodies without their own.
     resolution: DampingResolution,
@@ -211,6 +216,7 @@ impl Controller {
             settings,
             bodies: Vec::new(),
             surface: None,
+            pressure: Pressure::Hydrostatic,
             time: 0.0,
             resolution: DampingResolution::DEFAULT,
         }
@@ -225,6 +231,19 @@ impl Controller {
     /// `None`.
     pub fn set_surface(&mut self, surface: Option<SharedSurface>) {
         self.surface = surface;
+    }
+
+    /// The pressure of the surface's waves on the bodies: [`Pressure::Hydrostatic`] (the
+    /// default) or [`Pressure::FroudeKrylov`], whose wave part decays with depth (for
+    /// [`AiryWaves`](crate::water::AiryWaves) only: on another surface a body's report is
+    /// [`Outcome::Unsupported`]).
+    pub fn pressure(&self) -> Pressure {
+        self.pressure
+    }
+
+    /// Sets the pressure of the surface's waves on the bodies (see [`pressure`](Self::pressure)).
+    pub fn set_pressure(&mut self, pressure: Pressure) {
+        self.pressure = pressure;
     }
 
     /// The surface's time, s: advanced by `dt` at every [`step`](Self::step).
@@ -431,9 +450,10 @@ impl Controller {
             self.bodies.len()
         );
         let settings = &self.settings;
-        let sea = self.surface.as_deref().map(|surface| Sea {
+        let sea = self.surface.as_deref().map(|surface| SurfaceAt {
             surface,
             time: self.time,
+            pressure: self.pressure,
         });
         let one = |(body, (state, command)): (&mut FloatingBody, (&BodyState, &mut Command))| {
             body.share.forget_if_wiped(state);
@@ -464,7 +484,7 @@ impl Controller {
                     return;
                 }
                 // Not finite: the share goes back to zero.
-                Evaluation::NotFinite => ((zero, zero), (zero, zero)),
+                Evaluation::NotFinite | Evaluation::Unsupported => ((zero, zero), (zero, zero)),
                 Evaluation::Floating {
                     force,
                     torque,
@@ -578,9 +598,10 @@ mod tests {
                 body,
                 &state,
                 &resolved,
-                controller.surface.as_deref().map(|surface| Sea {
+                controller.surface.as_deref().map(|surface| SurfaceAt {
                     surface,
                     time: controller.time,
+                    pressure: controller.pressure,
                 }),
                 dt,
             );

@@ -19,6 +19,12 @@ pub enum Outcome {
     /// A pose, velocity or result was not finite: no force was applied, and the share the body
     /// had was taken back.
     NotFinite,
+    /// The buoyancy query was refused: a [`Method`](crate::Method) that assumes a flat surface
+    /// (Fast, Improved, Fast Surface) under waves, or the
+    /// [Froude–Krylov](crate::query::Pressure::FroudeKrylov) pressure on a surface that is not
+    /// [`AiryWaves`](crate::water::AiryWaves). No force was applied, and the share the body had
+    /// was taken back.
+    Unsupported,
 }
 
 /// What the controller computed and applied for one body at the last

@@ -23,6 +23,7 @@ pub use stl::parse_stl;
 
 #[cfg(feature = "std")]
 use crate::Real;
+#[cfg(feature = "std")]
 use crate::mesh::primitives::Shape;
 
 /// The memory [`load`] may hold while it reads and parses a file, per byte of the file: the

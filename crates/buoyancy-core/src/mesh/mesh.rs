@@ -299,7 +299,7 @@ impl<T: Real> Mesh<T> {
     /// surface sums and their area (for [`Buoyancy::wetted_area`](crate::Buoyancy::wetted_area):
     /// one number per node beside the volume sums, one per inner node beside the surface sums),
     /// the triangles' copy in leaf order, and the per-vertex terms of the walk under waves (see
-    /// [`Mesh::buoyancy_in_waves`]).
+    /// [`Mesh::buoyancy`] under waves).
     pub fn hierarchy_bytes(&self) -> usize {
         self.hierarchy.memory()
             + self.node_sums.memory()

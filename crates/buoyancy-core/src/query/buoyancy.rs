@@ -1,8 +1,8 @@
-//! Evaluation of the five methods for a mesh at a pose in a body of water: the entry points.
+//! The buoyancy query, [`Mesh::buoyancy`]: one entry point for still water and waves.
 //!
-//! Each evaluation brings the water plane into the mesh frame ([`Frame`]), chooses the
+//! In still water each evaluation brings the water plane into the mesh frame ([`Frame`]), chooses the
 //! traversal ([`Traversal`]), and hands over to the volume methods (`volume`) or the surface
-//! methods (`surface`), which sum per-triangle terms deterministically (`reduction`).
+//! methods (`surface_integral`), which sum per-triangle terms deterministically (`reduction`).
 //!
 //! # Determinism
 //! The scan sums the triangles in fixed chunks combined pairwise in a fixed tree; the hierarchy
@@ -14,75 +14,106 @@ use nalgebra::{Point3, Vector3};
 
 use crate::query::frame::Frame;
 use crate::query::result::TriangleCounts;
+use crate::query::waves::check_time;
+use crate::query::{Pressure, Query, Sea};
 use crate::{Buoyancy, Error, Mesh, Method, Pose, Real, Traversal, Water};
 
 impl<T: Real> Mesh<T> {
-    /// The buoyancy of this mesh placed by `pose` (mesh → world) in `water`, by `method`.
-    /// The torque is about the body's center of mass; see [`Buoyancy::about`] for another point.
+    /// The buoyancy of this mesh placed by `pose` (mesh → world) in `sea`, computed as `query`
+    /// says: the force and torque of the water's pressure over the wetted surface, world frame,
+    /// the torque about the body's center of mass (see [`Buoyancy::about`] for another point).
     ///
-    /// Walks the mesh's hierarchy from [`Traversal::CROSSOVER`] triangles up, so the cost follows
-    /// the waterline; below that, one pass over the triangles. No allocation.
+    /// `sea` is a [`Water`] for still water (`&water` will do) or a [`Sea`]: the still water
+    /// under a moving free surface at a time, with the hydrostatic or the Froude–Krylov
+    /// pressure. `query` is a [`Method`] or a [`Query`] (the method, the traversal, the threads).
+    /// See the [guide](crate::query) for the model of each case.
+    ///
+    /// * **Still water** (no surface, or one whose elevation bound is zero): every method;
+    ///   the traversal as asked ([`Traversal::Auto`]: the hierarchy from
+    ///   [`Traversal::CROSSOVER`] triangles, so that the cost follows the waterline). No
+    ///   allocation.
+    /// * **Waves, hydrostatic pressure**: the exact integral of `ρ·g·(η − h)` over the wetted
+    ///   surface, for [`Method::Exact`] and [`Method::ExactSurface`] alike (for a flat surface
+    ///   they agree to round-off; the volume formula is still water's way to the same
+    ///   integral). The hierarchy is walked against the layer the surface lies in
+    ///   ([`Traversal::Scan`]: every vertex evaluated, every triangle integrated on its own). It
+    ///   allocates a number per vertex and a point per vertex that may be wet.
+    /// * **Waves, Froude–Krylov pressure**: the same methods, every wetted piece integrated by
+    ///   a degree-5 quadrature, on the calling thread.
+    ///
+    /// Parallel (feature `rayon`, [`Query::in_parallel`]): the work is cut in pieces fixed by
+    /// the mesh (chunks of triangles for the scan, subtrees for the hierarchy, 16,384 vertices
+    /// for a surface), never by the number of threads, and merged in a fixed order: the result
+    /// is bit-identical to the serial one. Only large meshes are split: the hierarchy's halves
+    /// from 100,000 triangles, the scan's chunks of 4,096. On 2 threads the hierarchy of a
+    /// 10⁶-triangle mesh runs about 1.3–1.5× faster (`cargo bench --bench rounds --features
+    /// rayon -- large parallel hierarchy`). For many bodies or poses, parallelise across them
+    /// instead.
+    ///
+    /// ```
+    /// use buoyancy_core::query::Query;
+    /// use buoyancy_core::{mesh::primitives, Mesh, Method, Pose, Traversal, Water};
+    /// use nalgebra::{Translation3, UnitQuaternion};
+    ///
+    /// let (v, t) = primitives::uv_sphere::<f64>(0.5, 32, 16)?;
+    /// let ball = Mesh::new(v, t)?;
+    /// let pose = Pose::from_parts(Translation3::new(0.0, 0.1, 0.0), UnitQuaternion::identity());
+    /// let water = Water::default();
+    /// let auto = ball.buoyancy(&pose, &water, Method::Exact)?;
+    /// let scan = ball.buoyancy(&pose, &water, Query::new(Method::Exact).with_traversal(Traversal::Scan))?;
+    /// assert!((auto.force - scan.force).norm() < 1e-9);
+    /// # Ok::<(), buoyancy_core::Error>(())
+    /// ```
     ///
     /// # Errors
-    /// [`Error::InvalidPose`] if the pose has a NaN or infinite component or a zero quaternion
-    /// (a non-unit quaternion is normalised); [`Error::NonFiniteResult`] if the pose or water
-    /// is so large that the result overflows.
-    pub fn buoyancy(
+    /// * [`Error::InvalidPose`] if the pose has a NaN or infinite component or a zero
+    ///   quaternion (a non-unit quaternion is normalised);
+    /// * [`Error::Unsupported`] for [`Method::Fast`], [`Method::Improved`] or
+    ///   [`Method::FastSurface`] under waves (they assume a flat surface), or the Froude–Krylov
+    ///   pressure under a surface that is not [`AiryWaves`](crate::water::AiryWaves);
+    /// * [`Error::InvalidSurface`] for a non-finite time or what the surface reports;
+    /// * [`Error::NonFiniteResult`] if the pose or water is so large that the result overflows.
+    pub fn buoyancy<'a>(
         &self,
         pose: &Pose<T>,
-        water: &Water<T>,
-        method: Method,
+        sea: impl Into<Sea<'a, T>>,
+        query: impl Into<Query>,
     ) -> Result<Buoyancy<T>, Error> {
-        self.evaluate(pose, water, method, Traversal::Auto, false)
+        let (sea, query) = (sea.into(), query.into());
+        let method = query.method();
+        let scan = query.traversal() == Traversal::Scan;
+        let water = sea.water();
+        if sea.surface().is_some() {
+            check_time(sea.time())?;
+        }
+        match sea.surface() {
+            Some(surface) if !sea.is_calm() => {
+                check_wave_method(method)?;
+                match sea.pressure() {
+                    Pressure::Hydrostatic => self.hydrostatic_in_waves(
+                        pose,
+                        water,
+                        surface,
+                        sea.time(),
+                        scan,
+                        query.is_parallel(),
+                    ),
+                    Pressure::FroudeKrylov => {
+                        self.froude_krylov(pose, water, sea.airy_waves()?, sea.time())
+                    }
+                }
+            }
+            _ => {
+                if sea.pressure() == Pressure::FroudeKrylov && sea.surface().is_some() {
+                    // Checked even when calm: a grid at rest is no Airy sea.
+                    sea.airy_waves()?;
+                }
+                self.in_still_water(pose, water, method, query.traversal(), query.is_parallel())
+            }
+        }
     }
 
-    /// [`Mesh::buoyancy`] with the work split across rayon's thread pool, bit-identical to it:
-    /// the work is cut in pieces fixed by the mesh (chunks of triangles for the scan, subtrees
-    /// for the hierarchy), never by the number of threads, and the pieces are merged in a fixed
-    /// order.
-    ///
-    /// Only large meshes are split: the hierarchy's halves from 100,000 triangles (below that a
-    /// walk costs tens of microseconds, about what waking a thread does), the scan's chunks of
-    /// 4,096. On 2 threads the hierarchy of a 10⁶-triangle mesh runs about 1.3–1.5× faster
-    /// (`cargo bench --bench rounds --features rayon -- large parallel hierarchy`): the waterline
-    /// is rarely shared evenly between subtrees. For many bodies or poses, parallelise across
-    /// them instead.
-    #[cfg(feature = "rayon")]
-    pub fn par_buoyancy(
-        &self,
-        pose: &Pose<T>,
-        water: &Water<T>,
-        method: Method,
-    ) -> Result<Buoyancy<T>, Error> {
-        self.evaluate(pose, water, method, Traversal::Auto, true)
-    }
-
-    /// [`Mesh::par_buoyancy`] with the traversal chosen explicitly, bit-identical to
-    /// [`Mesh::buoyancy_with`] with the same traversal.
-    #[cfg(feature = "rayon")]
-    pub fn par_buoyancy_with(
-        &self,
-        pose: &Pose<T>,
-        water: &Water<T>,
-        method: Method,
-        traversal: Traversal,
-    ) -> Result<Buoyancy<T>, Error> {
-        self.evaluate(pose, water, method, traversal, true)
-    }
-
-    /// [`Mesh::buoyancy`] with the traversal chosen explicitly; see [`Traversal`]. Every
-    /// traversal gives the same result up to the order of summation (round-off).
-    pub fn buoyancy_with(
-        &self,
-        pose: &Pose<T>,
-        water: &Water<T>,
-        method: Method,
-        traversal: Traversal,
-    ) -> Result<Buoyancy<T>, Error> {
-        self.evaluate(pose, water, method, traversal, false)
-    }
-
-    fn evaluate(
+    fn in_still_water(
         &self,
         pose: &Pose<T>,
         water: &Water<T>,
@@ -146,6 +177,32 @@ impl<T: Real> Mesh<T> {
             wetted_area: counts.wetted_area2 * T::from_f64_lossy(0.5),
         }
     }
+}
+
+/// Checks `method` under waves: the exact methods are allowed, both the exact integral of the pressure.
+///
+/// # Errors
+/// [`Error::Unsupported`] (`method`) for the methods that assume a flat surface.
+fn check_wave_method(method: Method) -> Result<(), Error> {
+    let reason = match method {
+        Method::Exact | Method::ExactSurface => return Ok(()),
+        Method::Fast => {
+            "fast counts the triangles below a flat water plane, and the water has waves: \
+             under waves give exact or exact_surface (the exact integral of the pressure)"
+        }
+        Method::Improved => {
+            "improved cuts the triangles at a flat water plane, and the water has waves: \
+             under waves give exact or exact_surface (the exact integral of the pressure)"
+        }
+        Method::FastSurface => {
+            "fast_surface integrates below a flat water plane, and the water has waves: \
+             under waves give exact or exact_surface (the exact integral of the pressure)"
+        }
+    };
+    Err(Error::Unsupported {
+        parameter: "method",
+        reason,
+    })
 }
 
 #[cfg(test)]

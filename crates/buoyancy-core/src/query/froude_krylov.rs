@@ -283,12 +283,12 @@ impl Quadrature for Subdivided {
 }
 
 /// One evaluation's sea: its components resolved for the water, and the depth.
-struct Sea<T: Real> {
+struct DecayingWaves<T: Real> {
     waves: alloc::vec::Vec<ResolvedWave<T>>,
     depth: Option<T>,
 }
 
-impl<T: Real> Sea<T> {
+impl<T: Real> DecayingWaves<T> {
     /// The pressure, in units of `ρ·g`, at a point of height `z` above the still plane and
     /// horizontal position `q` at `time` (see the module documentation).
     fn pressure(&self, q: &Point3<T>, z: T, time: T) -> T {
@@ -307,37 +307,11 @@ impl<T: Real> Sea<T> {
 }
 
 impl<T: Real> Mesh<T> {
-    /// The buoyancy of this mesh placed by `pose` in `water` under the Airy or spectral sea
-    /// `waves` at `time` (s), by the linear Froude–Krylov pressure (see the
-    /// [guide](crate::query#waves-the-froude-krylov-pressure)): the pressure of the undisturbed wave,
-    /// whose wave part decays with depth, integrated over the wetted surface. The torque is
-    /// about the center of mass; the center is the point of the force's line of action nearest
-    /// the center of mass; the volume is the one implied by the vertical force.
-    ///
-    /// ```
-    /// use buoyancy_core::water::{AiryComponent, AiryWaves};
-    /// use buoyancy_core::{mesh::primitives, Mesh, Pose, Water};
-    /// use nalgebra::{Translation3, UnitQuaternion, Vector3};
-    ///
-    /// // A ball 3 m under a 10 m swell: the wave part of the pressure has decayed by e^{−k·3}.
-    /// let (v, t) = primitives::uv_sphere::<f64>(0.5, 48, 24)?;
-    /// let ball = Mesh::new(v, t)?;
-    /// let swell = AiryWaves::new(
-    ///     vec![AiryComponent { amplitude: 0.5, wavelength: 10.0, direction: Vector3::x(), phase: 0.0 }],
-    ///     None,
-    /// )?;
-    /// let deep = Pose::from_parts(Translation3::new(0.0, -3.0, 0.0), UnitQuaternion::identity());
-    /// let b = ball.buoyancy_froude_krylov(&deep, &Water::default(), &swell, 0.0)?;
-    /// let still = 1000.0 * 9.81 * ball.volume();
-    /// assert!((b.force.y / still - 1.0).abs() < 0.05);
-    /// # Ok::<(), buoyancy_core::Error>(())
-    /// ```
-    ///
-    /// # Errors
-    /// [`Error::InvalidPose`] for a non-finite pose; [`Error::InvalidSurface`] for a non-finite
-    /// time or a wave direction along the up normal; [`Error::NonFiniteResult`] if the result
-    /// overflows.
-    pub fn buoyancy_froude_krylov(
+    /// The buoyancy under the Airy or spectral sea `waves` at `time` (s) by the linear
+    /// Froude–Krylov pressure (see the [guide](crate::query#waves-the-froude-krylov-pressure)):
+    /// the torque about the center of mass, the center the point of the force's line of action
+    /// nearest the center of mass, the volume the one implied by the vertical force.
+    pub(crate) fn froude_krylov(
         &self,
         pose: &Pose<T>,
         water: &Water<T>,
@@ -347,7 +321,7 @@ impl<T: Real> Mesh<T> {
         self.froude_krylov_by(pose, water, waves, time, &AtStillPlane(Dunavant))
     }
 
-    /// [`Mesh::buoyancy_froude_krylov`] with the pressure integrated over each wetted piece by
+    /// [`Mesh::froude_krylov`] with the pressure integrated over each wetted piece by
     /// `quadrature`.
     fn froude_krylov_by<Q: Quadrature>(
         &self,
@@ -358,7 +332,7 @@ impl<T: Real> Mesh<T> {
         quadrature: &Q,
     ) -> Result<Buoyancy<T>, Error> {
         let (frame, heights) = self.under_waves(pose, water, waves, time)?;
-        let sea = Sea {
+        let sea = DecayingWaves {
             waves: resolve(waves.components(), water, waves.depth())?,
             depth: waves.depth(),
         };
@@ -440,7 +414,9 @@ impl<T: Real> Mesh<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Method;
     use crate::mesh::primitives;
+    use crate::query::{Pressure, Sea};
     use crate::water::AiryComponent;
     use alloc::string::String;
     use alloc::vec;
@@ -631,7 +607,11 @@ mod tests {
                     };
                     let (f, t) = errors(
                         &mesh
-                            .buoyancy_froude_krylov(&pose, &water, waves, time)
+                            .buoyancy(
+                                &pose,
+                                Sea::new(&water, waves, time).with_pressure(Pressure::FroudeKrylov),
+                                Method::ExactSurface,
+                            )
                             .unwrap(),
                     );
                     force.push(f);

@@ -1,10 +1,9 @@
 //! What the water does to a body: the buoyancy query, its methods and its result.
 //!
-//! * [`Mesh::buoyancy`](crate::Mesh::buoyancy) (in `buoyancy`): the entry point, for a mesh at
-//!   a pose in still water; [`Mesh::buoyancy_in_waves`](crate::Mesh::buoyancy_in_waves) under a
-//!   moving surface (`waves`), and
-//!   [`Mesh::buoyancy_froude_krylov`](crate::Mesh::buoyancy_froude_krylov) under the linear
-//!   Froude–Krylov pressure of Airy seas (`froude_krylov`).
+//! * [`Mesh::buoyancy`](crate::Mesh::buoyancy) (in `buoyancy`): the one entry point, for a mesh
+//!   at a pose in a [`Sea`] (a [`Water`] for still water), computed as a [`Query`] (or a
+//!   [`Method`]) says. Under a moving surface the hydrostatic pressure of the waves (`waves`) or
+//!   the linear Froude–Krylov pressure of Airy seas (`froude_krylov`), [`Pressure`].
 //! * [`Method`]: the paper's five methods. The volume methods, Fast, Improved and Exact
 //!   (`volume`), and the surface methods, Fast Surface and Exact Surface (`surface_integral`,
 //!   with the closed-form moments of the hierarchy's nodes in its `moments`).
@@ -151,15 +150,19 @@ pub(crate) mod clip;
 pub(crate) mod frame;
 pub(crate) mod froude_krylov;
 mod method;
+mod options;
 pub(crate) mod reduction;
 pub(crate) mod result;
+mod sea;
 pub(crate) mod surface_integral;
 mod traversal;
 pub(crate) mod volume;
 pub(crate) mod waves;
 
 pub use method::Method;
+pub use options::Query;
 pub use result::Buoyancy;
+pub use sea::{Pressure, Sea};
 pub use traversal::Traversal;
 
 #[cfg(doc)]

@@ -48,8 +48,8 @@ pub struct Buoyancy<T: Real> {
     /// and of the parts under water of the triangles the surface cuts.
     ///
     /// * [`Exact`](Method::Exact), [`Improved`](Method::Improved),
-    ///   [`ExactSurface`](Method::ExactSurface), [`Mesh::buoyancy_in_waves`] and
-    ///   [`Mesh::buoyancy_froude_krylov`]: exact, the area of the wetted pieces (under waves,
+    ///   [`ExactSurface`](Method::ExactSurface), and [`Mesh::buoyancy`] under waves
+    ///   (either pressure): exact, the area of the wetted pieces (under waves,
     ///   of the wetted surface those two integrate over: each triangle cut where its linearly
     ///   interpolated height above the free surface is zero). For a unit cube upright at draft
     ///   `d`, `1 + 4d`. `Improved` leaves the cut triangles out of its volume, not out of its

@@ -15,7 +15,7 @@ use crate::Error;
 /// * `Auto` (the default) takes the hierarchy on meshes of at least [`Traversal::CROSSOVER`]
 ///   triangles, and the scan otherwise.
 ///
-/// The parallel entry points (`Mesh::par_buoyancy`, feature `rayon`) follow the same traversal,
+/// A parallel query ([`Query::in_parallel`](crate::query::Query), feature `rayon`) follows the same traversal,
 /// split across threads.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum Traversal {

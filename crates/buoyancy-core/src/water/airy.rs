@@ -288,6 +288,11 @@ fn depth_ratios<T: Real>(k: T, z: T, depth: Option<T>) -> (T, T) {
 }
 
 impl<T: Real> WaterSurface<T> for AiryWaves<T> {
+    /// These waves.
+    fn as_airy_waves(&self) -> Option<&AiryWaves<T>> {
+        Some(self)
+    }
+
     fn elevations(
         &self,
         water: &Water<T>,

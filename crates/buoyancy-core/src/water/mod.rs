@@ -19,8 +19,8 @@
 //! * [`SurfaceFn`]: any function or closure of the horizontal position and time.
 //!
 //! Every surface is evaluated in batches, once per vertex per evaluation
-//! ([`WaterSurface::elevations`]); [`Mesh::buoyancy_in_waves`]
-//! integrates the pressure over the wetted surface (see `wave_pressure`).
+//! ([`WaterSurface::elevations`]); [`Mesh::buoyancy`] under a [`Sea`](crate::query::Sea)
+//! integrates the pressure over the wetted surface (see the [query's guide](crate::query)).
 
 mod airy;
 mod cosine;

@@ -6,9 +6,9 @@ use alloc::vec::Vec;
 
 use nalgebra::{Point3, Vector3};
 
-use super::AiryComponent;
 #[cfg(doc)]
-use super::{AiryWaves, HeightGrid};
+use super::HeightGrid;
+use super::{AiryComponent, AiryWaves};
 #[cfg(doc)]
 use crate::Mesh;
 use crate::{Error, Real, Water};
@@ -31,7 +31,7 @@ pub trait WaterSurface<T: Real>: Sync {
     ) -> Result<(), Error>;
 
     /// A bound on `|η|` everywhere and at all times (m), if the surface knows one: what lets
-    /// [`Mesh::buoyancy_in_waves`] walk its hierarchy. A vertex higher above the still plane
+    /// [`Mesh::buoyancy`] under waves walk its hierarchy. A vertex higher above the still plane
     /// than this bound plus the mesh's longest edge belongs to dry triangles only, so the
     /// surface is not evaluated there; the nodes more than the bound below the still plane are
     /// summed whole. `Some(0)` is still water. `None` (the default): every vertex evaluated,
@@ -42,7 +42,7 @@ pub trait WaterSurface<T: Real>: Sync {
 
     /// Bounds `(low, high)` on `η` (m) over the horizontal disc of `radius` (m) about the
     /// horizontal position of `center` (world frame) at `time` (s), if the surface knows them:
-    /// the layer [`Mesh::buoyancy_in_waves`] walks its hierarchy against, tighter than
+    /// the layer [`Mesh::buoyancy`] walks its hierarchy against under waves, tighter than
     /// [`elevation_bound`](Self::elevation_bound) where the waves are long against the body.
     /// The default is `(−b, b)` with `b` the elevation bound. [`AiryWaves`] bound each
     /// component over the phases the disc spans, [`HeightGrid`] takes the extremes of the
@@ -64,6 +64,13 @@ pub trait WaterSurface<T: Real>: Sync {
     /// this surface. [`AiryWaves`] give their orbital velocity.
     fn water_velocity(&self, water: &Water<T>, point: &Point3<T>, time: T) -> Option<Vector3<T>> {
         let _ = (water, point, time);
+        None
+    }
+
+    /// This surface as [`AiryWaves`], if it is: the components the
+    /// [Froude–Krylov](crate::query::Pressure::FroudeKrylov) pressure decays with depth. `None`
+    /// (the default) for every other surface.
+    fn as_airy_waves(&self) -> Option<&AiryWaves<T>> {
         None
     }
 }

@@ -19,86 +19,27 @@ use crate::water::WaterSurface;
 use crate::{Buoyancy, Error, Mesh, Method, Pose, Real, Water};
 
 impl<T: Real> Mesh<T> {
-    /// The buoyancy of this mesh placed by `pose` (mesh → world) in `water` whose free surface
-    /// is `surface` at `time` (s): the hydrostatic pressure of the waves integrated exactly over
-    /// the wetted surface (see the [guide](crate::query#waves-the-hydrostatic-pressure)). The torque is
-    /// about the body's center of mass.
-    ///
-    /// The cost follows what is under water: with the layer the surface's
-    /// [`elevation_range`](WaterSurface::elevation_range) gives over the body, the hierarchy
-    /// skips the nodes above it, integrates triangle by triangle only the leaves within it, and
-    /// sums the rest through per-vertex coefficients (see [the
-    /// walk](crate::query#the-walk)). The surface is evaluated once per vertex that may
-    /// be wet, in one call for up to 16,384 vertices. A calm surface (`b = 0`) is
-    /// [`Method::ExactSurface`] on the hierarchy. It allocates a
-    /// number per vertex and a point per vertex that may be wet.
-    ///
-    /// ```
-    /// use buoyancy_core::water::{AiryComponent, AiryWaves, CalmSurface};
-    /// use buoyancy_core::{mesh::primitives, Mesh, Method, Pose, Traversal, Water};
-    /// use nalgebra::{Translation3, UnitQuaternion, Vector3};
-    ///
-    /// let (v, t) = primitives::cube::<f64>(4)?;
-    /// let cube = Mesh::new(v, t)?;
-    /// let pose = Pose::from_parts(Translation3::new(0.0, -0.2, 0.0), UnitQuaternion::identity());
-    /// let water = Water::default();
-    ///
-    /// // Calm water: Exact Surface.
-    /// let calm = cube.buoyancy_in_waves(&pose, &water, &CalmSurface, 0.0)?;
-    /// let still = cube.buoyancy(&pose, &water, Method::ExactSurface)?;
-    /// assert!((calm.force - still.force).norm() < 1e-9);
-    ///
-    /// // A long swell whose crest is over the cube: more under water, pushed up harder.
-    /// let swell = AiryWaves::new(
-    ///     vec![AiryComponent { amplitude: 0.1, wavelength: 50.0, direction: Vector3::x(), phase: 0.0 }],
-    ///     None,
-    /// )?;
-    /// let crest = cube.buoyancy_in_waves(&pose, &water, &swell, 0.0)?;
-    /// assert!(crest.force.y > still.force.y);
-    /// # Ok::<(), buoyancy_core::Error>(())
-    /// ```
-    ///
-    /// # Errors
-    /// [`Error::InvalidPose`] for a non-finite pose; [`Error::InvalidSurface`] for a non-finite
-    /// time or what the surface reports; [`Error::NonFiniteResult`] if the result overflows.
-    pub fn buoyancy_in_waves(
+    /// The buoyancy under `surface` at `time` (s) by the hydrostatic pressure of the waves (see
+    /// the [guide](crate::query#waves-the-hydrostatic-pressure)): the hierarchy walked against
+    /// the layer the surface lies in, or with `scan` every vertex evaluated and every triangle
+    /// integrated on its own; `parallel` splits the vertices in chunks of 16,384 and the
+    /// hierarchy as the still-water query does.
+    pub(crate) fn hydrostatic_in_waves(
         &self,
         pose: &Pose<T>,
         water: &Water<T>,
         surface: &dyn WaterSurface<T>,
         time: T,
-    ) -> Result<Buoyancy<T>, Error> {
-        self.hydrostatic_in_waves(pose, water, surface, time, false)
-    }
-
-    /// [`Mesh::buoyancy_in_waves`] with the work split across rayon's threads, bit-identical to
-    /// it: the vertices in chunks of 16,384 (the surface evaluated chunk by chunk, concurrently),
-    /// the hierarchy as [`Mesh::par_buoyancy`] splits it. Worth it from about 10⁵ triangles.
-    ///
-    /// # Errors
-    /// As [`Mesh::buoyancy_in_waves`].
-    #[cfg(feature = "rayon")]
-    pub fn par_buoyancy_in_waves(
-        &self,
-        pose: &Pose<T>,
-        water: &Water<T>,
-        surface: &dyn WaterSurface<T>,
-        time: T,
-    ) -> Result<Buoyancy<T>, Error> {
-        self.hydrostatic_in_waves(pose, water, surface, time, true)
-    }
-
-    fn hydrostatic_in_waves(
-        &self,
-        pose: &Pose<T>,
-        water: &Water<T>,
-        surface: &dyn WaterSurface<T>,
-        time: T,
+        scan: bool,
         parallel: bool,
     ) -> Result<Buoyancy<T>, Error> {
         let frame = Frame::new(self, pose, water)?;
         check_time(time)?;
-        let layer = Layer::of(surface, water, &frame, self.bounding_radius, time);
+        let layer = if scan {
+            None
+        } else {
+            Layer::of(surface, water, &frame, self.bounding_radius, time)
+        };
         if layer.is_some_and(|l| l.mid == T::zero() && l.reach == T::zero()) {
             let frame = frame.nearer_when_submerged(self);
             return self
@@ -354,7 +295,7 @@ impl<T: Real> Mesh<T> {
         Ok(sums)
     }
 
-    /// [`Mesh::buoyancy_in_waves`] triangle by triangle, every vertex evaluated: the reference
+    /// The hydrostatic pressure under waves triangle by triangle, every vertex evaluated: the reference
     /// the walk is tested against.
     #[cfg(test)]
     pub(crate) fn buoyancy_in_waves_scan(
@@ -382,7 +323,7 @@ impl<T: Real> Mesh<T> {
     /// The frame of the evaluation and the heights of the vertices above the free surface.
     ///
     /// # Errors
-    /// As [`Mesh::buoyancy_in_waves`].
+    /// As [`Mesh::buoyancy`] under waves.
     pub(crate) fn under_waves(
         &self,
         pose: &Pose<T>,
@@ -471,12 +412,12 @@ impl<T: Real> Mesh<T> {
     }
 }
 
-/// Vertices per chunk of the vertex pass of [`Mesh::buoyancy_in_waves`]: the surface is evaluated
-/// once per chunk, and [`Mesh::par_buoyancy_in_waves`] evaluates the chunks concurrently.
+/// Vertices per chunk of the vertex pass under waves: the surface is evaluated
+/// once per chunk, and a parallel query evaluates the chunks concurrently.
 const VERTEX_CHUNK: usize = 16_384;
 
 /// [`Error::InvalidSurface`] for a time that is not finite.
-fn check_time<T: Real>(time: T) -> Result<(), Error> {
+pub(crate) fn check_time<T: Real>(time: T) -> Result<(), Error> {
     if time.is_finite() {
         Ok(())
     } else {
@@ -578,6 +519,7 @@ pub(crate) fn on_line_of_action<T: Real>(
 mod tests {
     use super::*;
     use crate::mesh::primitives;
+    use crate::query::{Query, Sea};
     use crate::water::{AiryComponent, AiryWaves, CalmSurface, HeightGrid, SurfaceFn};
     use nalgebra::{Point3, Translation3, UnitQuaternion};
 
@@ -676,7 +618,9 @@ mod tests {
                     UnitQuaternion::from_euler_angles(angle, 0.5 * angle, 0.2),
                 );
                 let time = 0.3 * angle;
-                let walk = torus.buoyancy_in_waves(&pose, &water, sea, time).unwrap();
+                let walk = torus
+                    .buoyancy(&pose, Sea::new(&water, sea, time), Method::ExactSurface)
+                    .unwrap();
                 let scan = torus
                     .buoyancy_in_waves_scan(&pose, &water, sea, time)
                     .unwrap();
@@ -761,15 +705,27 @@ mod tests {
                 );
                 let scale = water.specific_weight() * mesh.volume();
                 for surface in surfaces {
-                    let walk = mesh.buoyancy_in_waves(&pose, &water, surface, 0.3 * angle);
+                    let walk = mesh.buoyancy(
+                        &pose,
+                        Sea::new(&water, surface, 0.3 * angle),
+                        Method::ExactSurface,
+                    );
                     let scan = mesh.buoyancy_in_waves_scan(&pose, &water, surface, 0.3 * angle);
                     close(&walk.unwrap(), &scan.unwrap(), scale);
                 }
                 let calm = mesh
-                    .buoyancy_in_waves(&pose, &water, &CalmSurface, 0.0)
+                    .buoyancy(
+                        &pose,
+                        Sea::new(&water, &CalmSurface, 0.0),
+                        Method::ExactSurface,
+                    )
                     .unwrap();
                 let flat = mesh
-                    .buoyancy_in_waves(&pose, &water, &FlatWithBound, 0.0)
+                    .buoyancy(
+                        &pose,
+                        Sea::new(&water, &FlatWithBound, 0.0),
+                        Method::ExactSurface,
+                    )
                     .unwrap();
                 close(&calm, &flat, scale);
             }
@@ -807,7 +763,7 @@ mod tests {
             let fast = sphere.buoyancy(&pose, &water, Method::FastSurface).unwrap();
             for surface in [&CalmSurface as &dyn WaterSurface<f64>, &FlatWithBound] {
                 let calm = sphere
-                    .buoyancy_in_waves(&pose, &water, surface, 0.0)
+                    .buoyancy(&pose, Sea::new(&water, surface, 0.0), Method::ExactSurface)
                     .unwrap();
                 let tol = 1e-12 * sphere.surface_area();
                 assert!(
@@ -821,7 +777,7 @@ mod tests {
             assert!(exact.wetted_area <= sphere.surface_area() * (1.0 + 1e-12));
             let time = 0.3 * k as f64;
             let walk = sphere
-                .buoyancy_in_waves(&pose, &water, &airy, time)
+                .buoyancy(&pose, Sea::new(&water, &airy, time), Method::ExactSurface)
                 .unwrap();
             let scan = sphere
                 .buoyancy_in_waves_scan(&pose, &water, &airy, time)
@@ -863,9 +819,15 @@ mod tests {
             })
             .collect();
         for pose in &poses {
-            let serial = mesh.buoyancy_in_waves(pose, &water, &airy, 1.0).unwrap();
+            let serial = mesh
+                .buoyancy(pose, Sea::new(&water, &airy, 1.0), Method::ExactSurface)
+                .unwrap();
             let parallel = mesh
-                .par_buoyancy_in_waves(pose, &water, &airy, 1.0)
+                .buoyancy(
+                    pose,
+                    Sea::new(&water, &airy, 1.0),
+                    Query::new(Method::ExactSurface).in_parallel(),
+                )
                 .unwrap();
             assert_eq!(serial, parallel);
         }
