@@ -4,11 +4,11 @@
 use nalgebra::{Matrix6, Point3, Vector3};
 
 use super::body::FloatingBody;
-use super::report::{FloatReport, Outcome};
 use super::semi_implicit::{GeneralizedMass, implicit_damping, overshoots, semi_implicit_damping};
 use super::settings::Settings;
+use super::state::Wrench;
 use super::state::{BodyState, Motion};
-use super::wrench::Wrench;
+use super::state::{FloatReport, Outcome};
 use crate::Error;
 use crate::damping::{add_block, angular_damping, angular_damping_stiffness};
 use crate::query::{Pressure, Sea};

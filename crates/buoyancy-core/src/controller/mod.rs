@@ -151,27 +151,21 @@
 
 mod body;
 mod evaluation;
-mod last_evaluation;
-mod report;
 mod rest;
 mod semi_implicit;
 mod settings;
-mod share;
 mod state;
-mod wrench;
 
 use alloc::sync::Arc;
 use alloc::vec::Vec;
 
 pub use body::Part;
-pub use report::{FloatReport, Outcome};
 pub use rest::Rest;
 pub use settings::{BodyOptions, DampingResolution, Settings};
-pub use state::{BodyState, Command, Motion};
+pub use state::{BodyState, Command, FloatReport, Motion, Outcome};
 
-use body::FloatingBody;
+use body::{FloatingBody, LastEvaluation};
 use evaluation::{Evaluation, SurfaceAt, evaluate};
-use last_evaluation::LastEvaluation;
 
 use crate::Error;
 use crate::mesh::ReducedMesh;

@@ -5,7 +5,7 @@
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
 use super::state::BodyState;
-use super::wrench::Wrench;
+use super::state::Wrench;
 use crate::damping::add_block;
 
 /// The generalized mass `M` of a rigid body, `f64`, world frame.
