@@ -10,7 +10,6 @@ own ``xfrc_applied`` kept, bad input leaving ``data`` untouched).
 from __future__ import annotations
 
 import math
-import os
 from typing import Any
 
 import numpy as np
@@ -18,19 +17,14 @@ import pytest
 
 import buoyancy
 
+from conftest import quaternion_matrix, skip_unless_ci
+
 try:
     import mujoco
 except ImportError as error:  # not installed, or installed but not loadable here
-    if os.environ.get("CI") == "true":
-        pytest.fail(f"mujoco cannot be imported ({error}); CI=true, so its tests fail", pytrace=False)
-    pytest.skip(
-        f"mujoco cannot be imported ({error}); pip install 'buoyancy[mujoco]' (scripts/test.sh does)",
-        allow_module_level=True,
-    )
+    skip_unless_ci(f"mujoco cannot be imported ({error}); pip install 'buoyancy[mujoco]' (scripts/test.sh does)")
 import buoyancy.mujoco
 from buoyancy.mujoco import FloatingBodies, geom_parts
-
-from conftest import quaternion_matrix
 
 RHO, G = 1000.0, 9.81
 

@@ -14,6 +14,8 @@ from typing import Any
 import numpy as np
 import pytest
 
+from conftest import skip_unless_ci
+
 if not os.environ.get("DISPLAY") and not os.environ.get("WAYLAND_DISPLAY"):
     os.environ.setdefault("MUJOCO_GL", "osmesa")  # as the example does; read when mujoco is first imported
 
@@ -21,12 +23,7 @@ try:
     import gymnasium  # noqa: F401
     import mujoco  # noqa: F401
 except ImportError as error:  # not installed, or installed but not loadable here
-    if os.environ.get("CI") == "true":
-        pytest.fail(f"mujoco or gymnasium cannot be imported ({error}); CI=true, so these tests fail", pytrace=False)
-    pytest.skip(
-        f"mujoco or gymnasium cannot be imported ({error}); pip install 'buoyancy[mujoco]' gymnasium",
-        allow_module_level=True,
-    )
+    skip_unless_ci(f"mujoco or gymnasium cannot be imported ({error}); pip install 'buoyancy[mujoco]' gymnasium")
 
 EXAMPLE = pathlib.Path(__file__).resolve().parents[2] / "examples" / "mujoco_wave_energy.py"
 SECONDS = 20.0
@@ -133,10 +130,7 @@ def test_render_is_a_picture(example: ModuleType) -> None:
         try:
             frame = env.render()
         except Exception as error:  # no OpenGL context: no display, no OSMesa or EGL
-            message = f"cannot render here ({type(error).__name__}: {error}). {example.gl_advice()}"
-            if os.environ.get("CI") == "true":
-                pytest.fail(message + "; CI=true, so this test fails", pytrace=False)
-            pytest.skip(message)
+            skip_unless_ci(f"cannot render here ({type(error).__name__}: {error}). {example.gl_advice()}")
     finally:
         env.close()
     assert isinstance(frame, np.ndarray)

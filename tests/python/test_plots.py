@@ -13,7 +13,12 @@ import pytest
 import buoyancy
 from buoyancy import METHODS, plots, wave_plots
 
-pytest.importorskip("matplotlib", reason="the plots need matplotlib (pip install 'buoyancy[plot]')")
+from conftest import skip_unless_ci
+
+try:
+    import matplotlib  # noqa: F401
+except ImportError as error:  # not installed, or installed but not loadable here
+    skip_unless_ci(f"matplotlib cannot be imported ({error}); the plots need it (pip install 'buoyancy[plot]')")
 
 PNG = b"\x89PNG\r\n\x1a\n"
 

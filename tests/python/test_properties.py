@@ -13,22 +13,22 @@ exception (``TypeError``, ``ValueError`` and their kind), never an abort, a hang
 from __future__ import annotations
 
 import math
-import os
 from typing import Any, Literal
 
 import numpy as np
 import pytest
 
-if os.environ.get("CI") != "true":  # under CI a missing hypothesis fails the import below
-    pytest.importorskip("hypothesis", reason="the property suite needs hypothesis (pip install hypothesis)")
-from hypothesis import HealthCheck, given, settings
-from hypothesis import strategies as st
-from hypothesis.extra import numpy as hnp
+from conftest import quaternion_matrix, skip_unless_ci
+
+try:
+    from hypothesis import HealthCheck, given, settings
+    from hypothesis import strategies as st
+    from hypothesis.extra import numpy as hnp
+except ImportError as error:  # not installed, or installed but not loadable here
+    skip_unless_ci(f"hypothesis cannot be imported ({error}); the property suite needs it (pip install hypothesis)")
 
 import buoyancy
 from buoyancy import shapes
-
-from conftest import quaternion_matrix
 
 # Fixed examples (derandomize), no deadline (the first call of a shape builds its mesh).
 VALID = settings(max_examples=1000, derandomize=True, deadline=None, suppress_health_check=[HealthCheck.too_slow])

@@ -18,20 +18,20 @@ use buoyancy_rapier::{FloatOptions, FloatingBodies};
 use criterion::{Criterion, criterion_group, criterion_main};
 use rapier3d::prelude::*;
 
-/// The bunny (the procedural torus knot when the sample meshes are absent), scaled to a
-/// bounding radius of 0.3 m about its centroid.
+/// The bunny (the procedural torus knot when the sample meshes are absent, saying so; under
+/// `CI=true` their absence fails), scaled to a bounding radius of 0.3 m about its centroid.
 fn bunny() -> (String, Mesh<f64>) {
-    let loaded = buoyancy_samples::mesh_path("bunny.obj")
-        .and_then(|p| buoyancy_core::io::load::<f64>(p).ok());
+    // A file that exists but does not load fails the benchmark.
+    let loaded = buoyancy_samples::mesh_or_fallback(Some("bunny.obj"), "the procedural torus knot")
+        .map(|p| {
+            buoyancy_core::io::load::<f64>(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+        });
     let (name, (v, t)) = match loaded {
         Some(shape) => ("bunny".to_string(), shape),
-        None => {
-            eprintln!("note: benchmarking the procedural torus knot instead of bunny.obj");
-            (
-                "torus knot".to_string(),
-                primitives::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16).unwrap(),
-            )
-        }
+        None => (
+            "torus knot".to_string(),
+            primitives::torus_knot::<f64>(2, 3, 1.0, 0.3, 256, 16).unwrap(),
+        ),
     };
     let mesh = Mesh::new(v, t).unwrap();
     let (c, k) = (mesh.centroid(), 0.3 / mesh.bounding_radius());

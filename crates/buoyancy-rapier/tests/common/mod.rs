@@ -126,21 +126,21 @@ pub fn tilt_degrees(rb: &RigidBody) -> f32 {
 }
 
 /// A sample mesh scaled so that its bounding radius is `radius`, wound outward and centered on
-/// its centroid, or the procedural torus knot (with a note) when the file is absent.
+/// its centroid, or the procedural torus knot (with a note) when the file is absent; under
+/// `CI=true` a missing file fails the test.
+#[track_caller]
 pub fn model(file: &str, radius: f64) -> (String, Mesh<f64>) {
     // A file that exists but does not load fails the test.
-    let loaded = buoyancy_samples::mesh_path(file).map(|p| {
-        buoyancy_core::io::load::<f64>(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
-    });
+    let loaded =
+        buoyancy_samples::mesh_or_fallback(Some(file), "the procedural torus knot").map(|p| {
+            buoyancy_core::io::load::<f64>(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+        });
     let (name, (v, t)) = match loaded {
         Some(shape) => (file.to_string(), shape),
-        None => {
-            eprintln!("note: using the procedural torus knot instead of {file}");
-            (
-                "procedural torus knot".to_string(),
-                primitives::torus_knot::<f64>(2, 3, 1.0, 0.3, 128, 12).unwrap(),
-            )
-        }
+        None => (
+            "procedural torus knot".to_string(),
+            primitives::torus_knot::<f64>(2, 3, 1.0, 0.3, 128, 12).unwrap(),
+        ),
     };
     let mesh = Mesh::new(v, t).unwrap();
     let c = mesh.centroid();
