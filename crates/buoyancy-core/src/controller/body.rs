@@ -1,18 +1,18 @@
 //! One floating body: its meshes and own settings ([`Part`], `FloatingBody`), the controller's
 //! share of its force and torque (`AppliedShare`: what it added to the engine and has not taken
-//! back, see [the controller](super#forces-the-application-adds-itself)), and its last
-//! evaluation in still water with what it was made from (`LastEvaluation`), so that a step whose
-//! inputs are the same (a body asleep, its pose held by the engine) takes it again instead of
-//! computing it: the evaluation is deterministic, so the result is the same to the bit.
+//! back, see [the controller](super#forces-the-application-adds-itself)), what evaluating it
+//! gives (`Evaluation`), and its last evaluation in still water with what it was made from
+//! (`LastEvaluation`), so that a step whose inputs are the same (a body asleep, its pose held
+//! by the engine) takes it again instead of computing it: the evaluation is deterministic, so
+//! the result is the same to the bit.
 
 use alloc::sync::Arc;
 use alloc::vec::Vec;
 
-use nalgebra::Vector3;
+use nalgebra::{Point3, Vector3};
 
-use super::evaluation::Evaluation;
 use super::settings::{BodyOptions, DampingResolution, Settings};
-use super::state::{BodyState, Command, FloatReport, Motion};
+use super::state::{BodyState, Command, FloatReport, Motion, Outcome};
 use crate::mesh::ReducedMesh;
 use crate::{Error, Mesh, Pose};
 
@@ -79,6 +79,42 @@ impl FloatingBody {
     /// area.
     pub fn wetted_fraction(&self, wetted_area: f64) -> Option<f64> {
         (self.surface_area > 0.0).then(|| (wetted_area / self.surface_area).min(1.0))
+    }
+}
+
+/// What evaluating one body at one step gives.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Evaluation {
+    /// The body is not dynamic: nothing computed, its share stays as it is.
+    Inactive,
+    /// A pose, velocity or result was not finite: its share becomes zero.
+    NotFinite,
+    /// The query was refused (a method that assumes a flat surface under waves, the
+    /// Froude–Krylov pressure on a surface that is not Airy waves): its share becomes zero.
+    Unsupported,
+    /// Its share becomes this force and torque (world frame, the torque about the center of
+    /// mass); `report` says what was computed.
+    Floating {
+        report: FloatReport,
+        force: Vector3<f32>,
+        torque: Vector3<f32>,
+    },
+}
+
+impl Evaluation {
+    /// The report of this evaluation, for a body whose world center of mass is
+    /// `center_of_mass`.
+    pub fn report(&self, center_of_mass: Point3<f64>) -> FloatReport {
+        match self {
+            Evaluation::Inactive => FloatReport::without_forces(center_of_mass, Outcome::Inactive),
+            Evaluation::NotFinite => {
+                FloatReport::without_forces(center_of_mass, Outcome::NotFinite)
+            }
+            Evaluation::Unsupported => {
+                FloatReport::without_forces(center_of_mass, Outcome::Unsupported)
+            }
+            Evaluation::Floating { report, .. } => *report,
+        }
     }
 }
 

@@ -3,7 +3,7 @@
 
 use nalgebra::{Matrix6, Point3, Vector3};
 
-use super::body::FloatingBody;
+use super::body::{Evaluation, FloatingBody};
 use super::semi_implicit::{GeneralizedMass, implicit_damping, overshoots, semi_implicit_damping};
 use super::settings::Settings;
 use super::state::Wrench;
@@ -20,42 +20,6 @@ pub(crate) struct SurfaceAt<'a> {
     pub surface: &'a (dyn WaterSurface<f64> + Send),
     pub time: f64,
     pub pressure: Pressure,
-}
-
-/// What evaluating one body at one step gives.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum Evaluation {
-    /// The body is not dynamic: nothing computed, its share stays as it is.
-    Inactive,
-    /// A pose, velocity or result was not finite: its share becomes zero.
-    NotFinite,
-    /// The query was refused (a method that assumes a flat surface under waves, the
-    /// Froude–Krylov pressure on a surface that is not Airy waves): its share becomes zero.
-    Unsupported,
-    /// Its share becomes this force and torque (world frame, the torque about the center of
-    /// mass); `report` says what was computed.
-    Floating {
-        report: FloatReport,
-        force: Vector3<f32>,
-        torque: Vector3<f32>,
-    },
-}
-
-impl Evaluation {
-    /// The report of this evaluation, for a body whose world center of mass is
-    /// `center_of_mass`.
-    pub fn report(&self, center_of_mass: Point3<f64>) -> FloatReport {
-        match self {
-            Evaluation::Inactive => FloatReport::without_forces(center_of_mass, Outcome::Inactive),
-            Evaluation::NotFinite => {
-                FloatReport::without_forces(center_of_mass, Outcome::NotFinite)
-            }
-            Evaluation::Unsupported => {
-                FloatReport::without_forces(center_of_mass, Outcome::Unsupported)
-            }
-            Evaluation::Floating { report, .. } => *report,
-        }
-    }
 }
 
 /// Buoyancy + damping of `body` in `state` with `settings` (already resolved for it), over a

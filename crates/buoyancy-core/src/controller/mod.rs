@@ -164,8 +164,8 @@ pub use rest::Rest;
 pub use settings::{BodyOptions, DampingResolution, Settings};
 pub use state::{BodyState, Command, FloatReport, Motion, Outcome};
 
-use body::{FloatingBody, LastEvaluation};
-use evaluation::{Evaluation, SurfaceAt, evaluate};
+use body::{Evaluation, FloatingBody, LastEvaluation};
+use evaluation::{SurfaceAt, evaluate};
 
 use crate::Error;
 use crate::mesh::ReducedMesh;

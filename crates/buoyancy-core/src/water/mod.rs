@@ -32,14 +32,12 @@ mod surface;
 
 pub(crate) use airy::pressure_ratio;
 pub use airy::{AiryComponent, AiryWaves, BREAKING_STEEPNESS, WaterMotion};
+pub(crate) use airy::{ResolvedWave, amplitude_sum, horizontal_direction, resolve};
 pub use gerstner::GerstnerWaves;
 pub use grid::HeightGrid;
 pub use spectrum::{SeaState, Spectrum};
 pub use still_water::Water;
 pub use surface::{CalmSurface, SurfaceFn, WaterSurface};
-pub(crate) use surface::{
-    ResolvedWave, amplitude_sum, angular_frequency, horizontal_direction, resolve,
-};
 
 #[cfg(doc)]
 use crate::Mesh;

@@ -1,14 +1,9 @@
 //! The free surface: the [`WaterSurface`] trait every surface implements, the calm surface and a
-//! surface given by a function; the dispersion relation and the resolution of wave components
-//! for a water, which the linear surfaces share.
-
-use alloc::vec::Vec;
+//! surface given by a function.
 
 use nalgebra::{Point3, Vector3};
 
-#[cfg(doc)]
-use super::HeightGrid;
-use super::{AiryComponent, AiryWaves};
+use super::AiryWaves;
 #[cfg(doc)]
 use crate::Mesh;
 use crate::{Error, Real, Water};
@@ -45,7 +40,7 @@ pub trait WaterSurface<T: Real>: Sync {
     /// the layer [`Mesh::buoyancy`] walks its hierarchy against under waves, tighter than
     /// [`elevation_bound`](Self::elevation_bound) where the waves are long against the body.
     /// The default is `(−b, b)` with `b` the elevation bound. [`AiryWaves`] bound each
-    /// component over the phases the disc spans, [`HeightGrid`] takes the extremes of the
+    /// component over the phases the disc spans, [`HeightGrid`](super::HeightGrid) takes the extremes of the
     /// samples around the disc. Bounds that are exceeded give wrong results.
     fn elevation_range(
         &self,
@@ -134,86 +129,4 @@ impl<T: Real, F: Fn(&Point3<T>, T) -> T + Sync> WaterSurface<T> for SurfaceFn<F>
         }
         Ok(())
     }
-}
-
-/// The unit vector along `direction` within the still plane of `water` (its component along
-/// the normal removed).
-///
-/// # Errors
-/// [`Error::InvalidSurface`] if `direction` is not finite or is (nearly) along the normal.
-pub(crate) fn horizontal_direction<T: Real>(
-    water: &Water<T>,
-    direction: &Vector3<T>,
-) -> Result<Vector3<T>, Error> {
-    let n = water.normal();
-    let horizontal = direction - n.into_inner() * n.dot(direction);
-    let norm = horizontal.norm();
-    if !(norm.is_finite() && norm > T::default_epsilon().sqrt() * direction.norm()) {
-        return Err(Error::InvalidSurface {
-            parameter: "direction",
-            reason: "a wave direction must be finite and not along the water's up normal",
-        });
-    }
-    Ok(horizontal / norm)
-}
-
-/// A wave component resolved for one water: its unit direction in the still plane, its wave
-/// vector and its angular frequency by the dispersion relation.
-pub(crate) struct ResolvedWave<T: Real> {
-    pub direction: Vector3<T>,
-    /// `k·direction`.
-    pub k: Vector3<T>,
-    /// `k = 2π/λ`.
-    pub wavenumber: T,
-    pub omega: T,
-    pub amplitude: T,
-    pub phase: T,
-}
-
-impl<T: Real> ResolvedWave<T> {
-    /// `θ = k·p − ω·t + φ` at the horizontal position (or particle rest position) `p`.
-    #[inline(always)]
-    pub fn phase_at(&self, p: &Vector3<T>, time: T) -> T {
-        self.k.dot(p) - self.omega * time + self.phase
-    }
-}
-
-/// `components` resolved for `water` over water of `depth` (`None`: deep).
-///
-/// # Errors
-/// [`Error::InvalidSurface`] if a direction is along the water's up normal.
-pub(crate) fn resolve<T: Real>(
-    components: &[AiryComponent<T>],
-    water: &Water<T>,
-    depth: Option<T>,
-) -> Result<Vec<ResolvedWave<T>>, Error> {
-    components
-        .iter()
-        .map(|c| {
-            let direction = horizontal_direction(water, &c.direction)?;
-            let wavenumber = c.wavenumber();
-            Ok(ResolvedWave {
-                direction,
-                k: direction * wavenumber,
-                wavenumber,
-                omega: angular_frequency(wavenumber, water.gravity(), depth),
-                amplitude: c.amplitude,
-                phase: c.phase,
-            })
-        })
-        .collect()
-}
-
-/// The dispersion relation: `ω = √(g·k·tanh(k·h))`, `√(g·k)` in deep water (`depth` `None`).
-pub(crate) fn angular_frequency<T: Real>(wavenumber: T, gravity: T, depth: Option<T>) -> T {
-    let depth_factor = match depth {
-        Some(h) => (wavenumber * h).tanh(),
-        None => T::one(),
-    };
-    (gravity * wavenumber * depth_factor).sqrt()
-}
-
-/// `Σ aᵢ`: a bound on `|η|` for a sum of components.
-pub(crate) fn amplitude_sum<T: Real>(components: &[AiryComponent<T>]) -> T {
-    components.iter().fold(T::zero(), |s, c| s + c.amplitude)
 }

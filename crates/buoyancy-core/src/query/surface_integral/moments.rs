@@ -30,7 +30,7 @@
 use nalgebra::{Matrix3, Vector3};
 
 use crate::Real;
-use crate::query::surface_integral::SurfaceSums;
+use crate::query::surface_integral::sums::SurfaceSums;
 
 /// The pair `(j, l)` of each stored slice of `T`, in storage order.
 const PAIRS: [(usize, usize); 6] = [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)];
