@@ -238,6 +238,29 @@ def test_sea_states_are_deterministic_and_have_the_requested_height() -> None:
     assert np.allclose([c.direction[2] for c in ocean.waves.components], 0)
 
 
+def test_a_sea_state_drawn_without_a_water_is_drawn_for_the_water_it_is_given_to() -> None:
+    """``Waves.jonswap`` without ``water=`` given to a z-up water of another gravity: the same
+    components as drawn with that water, its wavelengths following the gravity and its
+    directions spread about z; it pickles as drawn for the water it was given to."""
+    import pickle
+
+    sea = buoyancy.Waves.jonswap(2.0, 8.0, spreading=3.0, n=16, seed=5)
+    assert np.ptp([c.direction[2] for c in sea.components]) > 0.1  # standalone: y up, spread in x-z
+    moon = buoyancy.Water(gravity=1.62, normal=(0, 0, 1))
+    given = buoyancy.Water(gravity=1.62, normal=(0, 0, 1), waves=sea)
+    drawn = buoyancy.Waves.jonswap(2.0, 8.0, spreading=3.0, n=16, seed=5, water=moon)
+    assert given.waves == drawn and given.waves is not sea
+    assert [c.direction[2] for c in given.waves.components] == [0.0] * 16
+    assert [c.amplitude for c in given.waves.components] == [c.amplitude for c in drawn.components]
+    # The wavelengths follow the gravity: the periods are the standalone draw's.
+    periods = 2 * np.pi / given.waves.angular_frequencies(gravity=1.62)
+    np.testing.assert_allclose(periods, 2 * np.pi / sea.angular_frequencies(gravity=9.81), rtol=1e-12)
+    again = pickle.loads(pickle.dumps(given))
+    assert again == given and again.waves == drawn
+    # Drawn for the default water and given to it: the same object, nothing drawn again.
+    assert buoyancy.Water(waves=sea).waves is sea
+
+
 # --- the Froude–Krylov pressure --------------------------------------------------------------
 
 
@@ -637,15 +660,28 @@ NAN = float("nan")
             "^waves: invalid water surface: a wave direction",
         ),
         (
-            lambda: buoyancy.Water(normal=(0, 0, 1), waves=buoyancy.Waves.jonswap(1.0, 8.0)),
+            lambda: buoyancy.Water(normal=(0, 0, 1), waves=buoyancy.Waves.jonswap(1.0, 8.0, water=buoyancy.Water())),
             ValueError,
-            r"^waves: the sea state's components were drawn for gravity 9.81 m/s² and up normal \(0, 1, 0\), and this "
-            r"water has gravity 9.81 and normal \(0, 0, 1\): pass this water as water= to Waves.jonswap$",
+            r"^waves: the sea state's components were drawn for the water given as water=, of gravity 9.81 m/s² and "
+            r"up normal \(0, 1, 0\), and this water has gravity 9.81 and normal \(0, 0, 1\): pass this water as "
+            r"water= to Waves.jonswap, or no water \(the waves are then drawn for the water they are given to\)$",
         ),
         (
-            lambda: buoyancy.Water(gravity=9.8, waves=buoyancy.Waves.pierson_moskowitz(1.0, 8.0)),
+            lambda: buoyancy.Water(
+                gravity=9.8, waves=buoyancy.Waves.pierson_moskowitz(1.0, 8.0, water=buoyancy.Water())
+            ),
             ValueError,
-            r"^waves: the sea state's .* to Waves.pierson_moskowitz$",
+            r"^waves: the sea state's .* to Waves.pierson_moskowitz, or no water",
+        ),
+        (
+            lambda: buoyancy.Waves.jonswap(1.0, 8.0, direction=(0, 1, 0)),  # drawn for Water(): y up
+            ValueError,
+            "^direction: invalid water surface: a wave direction must be finite and not along",
+        ),
+        (
+            lambda: buoyancy.Water(normal=(1, 0, 0), waves=buoyancy.Waves.jonswap(1.0, 8.0)),
+            ValueError,
+            "^waves: invalid water surface: a wave direction must be finite and not along",
         ),
     ],
 )

@@ -371,8 +371,12 @@ impl PyWaves {
     ///     Water depth, m; ``None`` (default) for deep water.
     /// water : Water, optional
     ///     The water the waves are for: the wavelengths follow from its gravity, the spreading
-    ///     turns about its up normal (default ``Water()``: 9.81 m/s², y up). Giving the waves to
-    ///     a :class:`Water` of another gravity or normal is a ``ValueError``.
+    ///     turns about its up normal. By default (``None``) the waves are drawn for the water
+    ///     they are given to: ``Water(normal=(0, 0, 1), waves=Waves.jonswap(2.0, 8.0))`` is a
+    ///     z-up sea, the same seed giving the same frequencies, amplitudes and phases (until
+    ///     then, and for :attr:`components` read here, ``Water()``: 9.81 m/s², y up, so that a
+    ///     ``direction`` along y needs ``water=``). With a water given, giving the waves to a
+    ///     :class:`Water` of another gravity or normal is a ``ValueError``.
     /// pressure : str
     ///     ``"hydrostatic"`` (default) or ``"froude_krylov"``: the pressure
     ///     :meth:`Mesh.buoyancy` integrates under the waves (see :class:`Waves`).
@@ -385,8 +389,10 @@ impl PyWaves {
     /// >>> a = np.array([c.amplitude for c in sea.components])
     /// >>> round(float(4 * np.sqrt(np.sum(a**2) / 2)), 12)    # the significant height, m
     /// 2.0
-    /// >>> z_up = buoyancy.Water(normal=(0, 0, 1))
-    /// >>> ocean = buoyancy.Water(normal=(0, 0, 1), waves=buoyancy.Waves.jonswap(2.0, 8.0, water=z_up))
+    /// >>> ocean = buoyancy.Water(normal=(0, 0, 1), waves=buoyancy.Waves.jonswap(2.0, 8.0, spreading=10.0))
+    /// >>> d = np.array([c.direction for c in ocean.waves.components])
+    /// >>> bool(np.all(d[:, 2] == 0.0))    # drawn about the water's up normal, z
+    /// True
     /// >>> buoyancy.Waves.jonswap(2.0, 8.0, n=16, pressure="froude_krylov").pressure
     /// 'froude_krylov'
     #[classmethod]

@@ -33,6 +33,9 @@ pub struct SeaOrigin {
     sea: SeaState<f64>,
     depth: Option<f64>,
     water: Water<f64>,
+    /// Whether that water was given (`water=`); if not, the waves are drawn again for the
+    /// water they are given to.
+    water_given: bool,
 }
 
 /// JONSWAP's default peak enhancement, the North Sea mean.
@@ -66,8 +69,9 @@ impl SeaOrigin {
             Some(d) => Some(convert::real(d, "depth")?),
             None => None,
         };
-        let still = convert::instance::<PyWater>(args.water, "water")?
-            .map_or_else(Water::default, |w| w.get().inner);
+        let given_water = convert::instance::<PyWater>(args.water, "water")?;
+        let water_given = given_water.is_some();
+        let still = given_water.map_or_else(Water::default, |w| w.get().inner);
         let sea = SeaState {
             spectrum,
             significant_height: convert::real(args.hs, "hs")?,
@@ -99,21 +103,57 @@ impl SeaOrigin {
                 sea,
                 depth,
                 water: still,
+                water_given,
             },
         ))
     }
 
-    /// Checks that `water` has the gravity and up normal the components were drawn for.
-    pub fn check(&self, water: &Water<f64>) -> PyResult<()> {
-        let drawn_for = self.water;
-        if drawn_for.gravity() == water.gravity() && drawn_for.normal() == water.normal() {
-            return Ok(());
+    /// The components for `water`: `None` when they were drawn for its gravity and up normal,
+    /// else, for waves drawn without `water=`, the same sea state drawn again for it (the draw
+    /// is deterministic for a seed: the frequencies, amplitudes and phases are the same, the
+    /// wavelengths follow `water`'s gravity, the spreading turns about its normal).
+    ///
+    /// # Errors
+    /// A `ValueError` naming `waves` for waves drawn with `water=` another water, or a sea
+    /// state that cannot be drawn for this one (its direction along the normal).
+    pub fn for_water(
+        &self,
+        py: Python<'_>,
+        water: &Water<f64>,
+    ) -> PyResult<Option<(AiryWaves<f64>, Self)>> {
+        if self.drawn_for(water) {
+            return Ok(None);
         }
+        if self.water_given {
+            return Err(self.mismatch(water));
+        }
+        let (sea, depth) = (self.sea, self.depth);
+        let waves = py
+            .detach(|| AiryWaves::from_sea_state(&sea, water, depth))
+            .map_err(|e| to_py(e, Some("waves")))?;
+        Ok(Some((
+            waves,
+            SeaOrigin {
+                water: *water,
+                ..*self
+            },
+        )))
+    }
+
+    /// Whether the components were drawn for `water`'s gravity and up normal.
+    fn drawn_for(&self, water: &Water<f64>) -> bool {
+        self.water.gravity() == water.gravity() && self.water.normal() == water.normal()
+    }
+
+    /// The error for `water`, whose gravity or up normal is not the one of the water the
+    /// components were drawn for, given as `water=`.
+    fn mismatch(&self, water: &Water<f64>) -> PyErr {
+        let drawn_for = self.water;
         let (n, m) = (drawn_for.normal(), water.normal());
-        Err(arg_error(
+        arg_error(
             "waves",
             format!(
-                "the sea state's components were drawn for gravity {} m/s² and up normal ({}, {}, {}), and this water has gravity {} and normal ({}, {}, {}): pass this water as water= to Waves.{}",
+                "the sea state's components were drawn for the water given as water=, of gravity {} m/s² and up normal ({}, {}, {}), and this water has gravity {} and normal ({}, {}, {}): pass this water as water= to Waves.{}, or no water (the waves are then drawn for the water they are given to)",
                 g(drawn_for.gravity()),
                 g(n.x),
                 g(n.y),
@@ -124,7 +164,7 @@ impl SeaOrigin {
                 g(m.z),
                 self.constructor()
             ),
-        ))
+        )
     }
 
     /// The name of the classmethod that draws this sea state.
@@ -169,7 +209,12 @@ impl SeaOrigin {
         let py = cls.py();
         let s = &self.sea;
         let direction = (s.direction.x, s.direction.y, s.direction.z);
-        let water = Py::new(py, PyWater::still(self.water))?;
+        // Waves drawn without a water pickle without one, to be drawn again for the water they
+        // are given to.
+        let water = match self.water_given {
+            true => Some(Py::new(py, PyWater::still(self.water))?),
+            false => None,
+        };
         let args = match s.spectrum {
             Spectrum::Jonswap { gamma } => (
                 s.significant_height,

@@ -78,15 +78,29 @@ impl PartialEq for WaterWaves {
 impl WaterWaves {
     /// The `waves` argument of a `Water` whose still plane is `water`. Airy and Gerstner waves
     /// are evaluated once at the origin, so that a direction along the water's normal is
-    /// reported here; a sea state must have been drawn for the water's gravity and normal.
+    /// reported here. A sea state drawn without `water=` is drawn again for this water's
+    /// gravity and normal if they are not the default's; one drawn with another water is an
+    /// error.
     pub fn parse(obj: &Bound<'_, PyAny>, water: &Water<f64>) -> PyResult<Self> {
+        let py = obj.py();
+        let mut given = obj.clone();
         let surface = if let Ok(wave) = obj.cast::<PyAiryWave>() {
             Surface::Airy(PyWaves::single(wave.get())?)
         } else if let Ok(waves) = obj.cast::<PyWaves>() {
-            if let Some(origin) = &waves.get().origin {
-                origin.check(water)?;
+            let waves = waves.get();
+            match waves.origin.as_ref().map(|o| o.for_water(py, water)) {
+                Some(Err(error)) => return Err(error),
+                Some(Ok(Some((inner, origin)))) => {
+                    let drawn = PyWaves {
+                        inner,
+                        origin: Some(origin),
+                        pressure: waves.pressure,
+                    };
+                    given = Bound::new(py, drawn.clone())?.into_any();
+                    Surface::Airy(drawn)
+                }
+                Some(Ok(None)) | None => Surface::Airy(waves.clone()),
             }
-            Surface::Airy(waves.get().clone())
         } else if let Ok(waves) = obj.cast::<PyGerstnerWaves>() {
             Surface::Gerstner(waves.get().clone())
         } else if let Ok(grid) = obj.cast::<PyHeightGrid>() {
@@ -125,7 +139,7 @@ impl WaterWaves {
             warn_user(obj.py(), &message)?;
         }
         Ok(WaterWaves {
-            given: obj.clone().unbind(),
+            given: given.unbind(),
             surface,
         })
     }
