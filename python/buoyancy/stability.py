@@ -229,7 +229,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     )
     parser.add_argument("--up", choices=sorted(AXES), default="z", help="the mesh axis pointing up (default z)")
     parser.add_argument("--axis", choices=sorted(AXES), default="x", help="the longitudinal axis (default x)")
-    parser.add_argument("--density", type=float, default=1025.0, help="water density, kg/m³ (default 1025, sea)")
+    parser.add_argument(
+        "--density",
+        type=float,
+        default=1000.0,
+        help="water density, kg/m³ (default 1000, fresh water, as the library's Water(); 1025 for the sea)",
+    )
     parser.add_argument("--gravity", type=float, default=9.81, help="m/s² (default 9.81)")
     parser.add_argument("--heel-max", type=float, default=90.0, help="last heel of the GZ curve, ° (default 90)")
     parser.add_argument("--heel-step", type=float, default=2.5, help="heel step, ° (default 2.5)")

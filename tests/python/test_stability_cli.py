@@ -12,7 +12,7 @@ import pytest
 from buoyancy import shapes
 from buoyancy.stability import main
 
-RHO = 1025.0
+RHO = 1000.0  # the default density, as the library's Water()
 LENGTH, BEAM, DEPTH = 4.0, 2.0, 1.0
 
 
@@ -39,6 +39,7 @@ def test_box_equilibrium_table_and_gz_curve(tmp_path: pathlib.Path, capsys: pyte
     code = main([str(mesh), "--mass", str(mass), "--cog", "0", "0", str(kg), "--up", "z", "--out", str(out)])
     printed = capsys.readouterr().out
     assert code == 0, printed
+    assert "water: 1000 kg/m³, g = 9.81 m/s², up = mesh z" in printed  # the defaults, said
     kb, bm_t, bm_l = draft / 2, BEAM**2 / (12 * draft), LENGTH**2 / (12 * draft)
     values = {
         line.split()[0]: line.split()[1] for line in printed.splitlines() if line.startswith("  ") and line.split()

@@ -11,6 +11,10 @@ use crate::mesh::PyMesh;
 /// (case-insensitive): ``.obj`` (Wavefront), ``.stl`` (ASCII or binary) or ``.ply`` (ASCII or
 /// binary, either byte order; polygons are split into triangles).
 ///
+/// The vertices are taken as they are, in metres; no up axis is applied (files do not say
+/// one). STL from CAD and hull files are usually z up, and :class:`Water`'s default is y up:
+/// float such a mesh in ``Water(normal=(0, 0, 1))``.
+///
 /// Parameters
 /// ----------
 /// path : str or os.PathLike

@@ -411,6 +411,10 @@ impl PyMesh {
     /// or from a ``trimesh.Scene``: its geometry concatenated, each part placed by the scene's
     /// transforms (``scene.to_geometry()``), which must together be closed.
     ///
+    /// The vertices are taken as they are; no up axis is applied. trimesh, CAD files and naval
+    /// tools are usually z up, and :class:`Water`'s default is y up: float such a mesh in
+    /// ``Water(normal=(0, 0, 1))`` (see the README's conventions).
+    ///
     /// >>> import trimesh  # doctest: +SKIP
     /// >>> buoyancy.Mesh.from_trimesh(trimesh.creation.box())  # doctest: +SKIP
     /// Mesh(n_vertices=8, n_triangles=12, volume=1, centroid=[0, 0, 0])
