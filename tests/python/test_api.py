@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import importlib
+import importlib.util
 import pathlib
 import pickle
 import re
@@ -549,6 +550,22 @@ def test_readme_python_example() -> None:
             run_examples(block, "README")
         else:
             exec(compile(block, "README.md", "exec"), {})
+
+
+def test_the_stub_docstrings_are_the_modules() -> None:
+    """Every docstring of ``_core.pyi`` is the compiled module's own (the Rust doc comment), as
+    ``scripts/stub_docstrings.py`` writes it: a doc comment changed without the stub fails here.
+    The stub checked is the repository's; the module, the installed wheel's."""
+    spec = importlib.util.spec_from_file_location("stub_docstrings", REPO / "scripts" / "stub_docstrings.py")
+    assert spec is not None and spec.loader is not None
+    script = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(script)
+    stub = script.STUB.read_text(encoding="utf-8")
+    rendered = script.render(stub, buoyancy._core)
+    assert rendered == stub, "the stub's docstrings have drifted: run python scripts/stub_docstrings.py"
+    # The check can fail: a stub docstring edited by hand is put back.
+    edited = stub.replace('"""A closed triangle mesh, validated', '"""A mesh, validated', 1)
+    assert edited != stub and script.render(edited, buoyancy._core) == stub
 
 
 def test_stubs_match_the_module() -> None:
