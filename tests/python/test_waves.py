@@ -241,7 +241,7 @@ def test_sea_states_are_deterministic_and_have_the_requested_height() -> None:
 def test_a_sea_state_drawn_without_a_water_is_drawn_for_the_water_it_is_given_to() -> None:
     """``Waves.jonswap`` without ``water=`` given to a z-up water of another gravity: the same
     components as drawn with that water, its wavelengths following the gravity and its
-    directions spread about z; it pickles as drawn for the water it was given to."""
+    directions spread about z; they pickle as drawn for the water they were given to."""
     import pickle
 
     sea = buoyancy.Waves.jonswap(2.0, 8.0, spreading=3.0, n=16, seed=5)
@@ -257,6 +257,7 @@ def test_a_sea_state_drawn_without_a_water_is_drawn_for_the_water_it_is_given_to
     np.testing.assert_allclose(periods, 2 * np.pi / sea.angular_frequencies(gravity=9.81), rtol=1e-12)
     again = pickle.loads(pickle.dumps(given))
     assert again == given and again.waves == drawn
+    assert pickle.loads(pickle.dumps(given.waves)) == drawn  # alone, still drawn for that water
     # Drawn for the default water and given to it: the same object, nothing drawn again.
     assert buoyancy.Water(waves=sea).waves is sea
 

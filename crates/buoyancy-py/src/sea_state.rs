@@ -133,8 +133,10 @@ impl SeaOrigin {
             .map_err(|e| to_py(e, Some("waves")))?;
         Ok(Some((
             waves,
+            // Drawn for `water` now, as if it had been given: they pickle with it.
             SeaOrigin {
                 water: *water,
+                water_given: true,
                 ..*self
             },
         )))
