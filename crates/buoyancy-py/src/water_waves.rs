@@ -78,9 +78,8 @@ impl PartialEq for WaterWaves {
 impl WaterWaves {
     /// The `waves` argument of a `Water` whose still plane is `water`. Airy and Gerstner waves
     /// are evaluated once at the origin, so that a direction along the water's normal is
-    /// reported here. A sea state drawn without `water=` is drawn again for this water's
-    /// gravity and normal if they are not the default's; one drawn with another water is an
-    /// error.
+    /// reported here. A sea state drawn without `water=` for another gravity or normal is drawn
+    /// again for this water's; one drawn with `water=` another water is an error.
     pub fn parse(obj: &Bound<'_, PyAny>, water: &Water<f64>) -> PyResult<Self> {
         let py = obj.py();
         let mut given = obj.clone();
@@ -88,9 +87,9 @@ impl WaterWaves {
             Surface::Airy(PyWaves::single(wave.get())?)
         } else if let Ok(waves) = obj.cast::<PyWaves>() {
             let waves = waves.get();
-            match waves.origin.as_ref().map(|o| o.for_water(py, water)) {
-                Some(Err(error)) => return Err(error),
-                Some(Ok(Some((inner, origin)))) => {
+            let redrawn = waves.origin.as_ref().map(|o| o.for_water(py, water));
+            match redrawn.transpose()?.flatten() {
+                Some((inner, origin)) => {
                     let drawn = PyWaves {
                         inner,
                         origin: Some(origin),
@@ -99,7 +98,7 @@ impl WaterWaves {
                     given = Bound::new(py, drawn.clone())?.into_any();
                     Surface::Airy(drawn)
                 }
-                Some(Ok(None)) | None => Surface::Airy(waves.clone()),
+                None => Surface::Airy(waves.clone()),
             }
         } else if let Ok(waves) = obj.cast::<PyGerstnerWaves>() {
             Surface::Gerstner(waves.get().clone())
@@ -136,7 +135,7 @@ impl WaterWaves {
                  break): linear theory's surface and pressure are a look here, not the sea's",
                 crate::format::g(steepness)
             );
-            warn_user(obj.py(), &message)?;
+            warn_user(py, &message)?;
         }
         Ok(WaterWaves {
             given: given.unbind(),

@@ -71,23 +71,12 @@ pub fn mesh_or_fallback(name: Option<&str>, fallback: &str) -> Option<PathBuf> {
 /// The sample mesh `name` (the folder when `None`) in `dir`, or what [`mesh_or_fallback`] says
 /// when it does not exist (`named_by_variable`: whether `dir` is `$BUOYANCY_MESHES`).
 fn find(dir: &Path, name: Option<&str>, named_by_variable: bool) -> Result<PathBuf, String> {
-    let (path, missing) = match name {
-        Some(name) => (
-            dir.join(name),
-            format!("sample mesh {name} not found in {}", dir.display()),
-        ),
-        None => (
-            dir.to_path_buf(),
-            format!("the sample meshes' folder {} not found", dir.display()),
-        ),
+    let missing = match name {
+        Some(name) if dir.join(name).is_file() => return Ok(dir.join(name)),
+        None if dir.is_dir() => return Ok(dir.to_path_buf()),
+        Some(name) => format!("sample mesh {name} not found in {}", dir.display()),
+        None => format!("the sample meshes' folder {} not found", dir.display()),
     };
-    let found = match name {
-        Some(_) => path.is_file(),
-        None => path.is_dir(),
-    };
-    if found {
-        return Ok(path);
-    }
     let whence = if named_by_variable {
         format!("the folder ${MESHES_VARIABLE} names")
     } else {
